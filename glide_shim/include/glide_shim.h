@@ -1,0 +1,61 @@
+/* glide_shim.h: what the glideshadows shim adds to the Glide 2.x API. Nothing here exists on a
+ * real Voodoo; ported programs need none of it. Errors, backend choice and frame export live
+ * here so that glide.h stays exactly the SDK's. */
+#ifndef GLIDE_SHIM_H
+#define GLIDE_SHIM_H
+
+#include <glide.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(GLIDESHIM_BUILDING)
+#define GLIDESHIM_API __attribute__((visibility("default")))
+#else
+#define GLIDESHIM_API
+#endif
+
+/* Every kind of error an entry point can report. A call that reports one has changed nothing. */
+typedef enum {
+  GLIDESHIM_OK = 0,
+  GLIDESHIM_ERR_NOT_INITIALIZED, /* a call before grGlideInit, or one needing a window with none open */
+  GLIDESHIM_ERR_INVALID_ENUM,    /* an enum value Glide 2.x does not define for that argument */
+  GLIDESHIM_ERR_NULL_POINTER,    /* a required pointer is NULL */
+  GLIDESHIM_ERR_OUT_OF_RANGE,    /* a number, region or address outside what the hardware has */
+  GLIDESHIM_ERR_INVALID_VALUE,   /* NaN, infinity or an absurd coordinate in a vertex */
+  GLIDESHIM_ERR_INCONSISTENT,    /* arguments that contradict each other (LOD order, lock state) */
+  GLIDESHIM_ERR_UNSUPPORTED,     /* valid Glide 2.x, but not implemented by this shim yet */
+  GLIDESHIM_ERR_BACKEND          /* the OpenGL backend failed (context, shader, file output) */
+} GlideShimError;
+
+/* The last error reported since the previous clear, and its message ("" when none). */
+GLIDESHIM_API GlideShimError glideShimGetLastError(void);
+GLIDESHIM_API const char *glideShimGetLastErrorMessage(void);
+GLIDESHIM_API void glideShimClearError(void);
+/* "GLIDESHIM_ERR_INVALID_ENUM" and so on; "unknown" for values outside the enum. */
+GLIDESHIM_API const char *glideShimErrorName(GlideShimError error);
+
+/* The backend that made the current context: "osmesa" or "egl"; "" with no window open.
+ * Chosen at grSstWinOpen from GLIDESHIM_BACKEND (osmesa by default). */
+GLIDESHIM_API const char *glideShimBackendName(void);
+
+/* The size grSstWinOpen(..., GR_RESOLUTION_NONE, ...) opens, for sizes the Voodoo's resolution
+ * list lacks (default 640x480). Each side 1..2048; FXFALSE and nothing changed otherwise. */
+GLIDESHIM_API FxBool glideShimSetWindowSize(int width, int height);
+
+/* Writes a colour buffer (GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER) as an 8-bit RGB PNG
+ * through the Voodoo's gamma table, as the monitor would show it. FXFALSE (with an error
+ * reported) if the buffer or path is bad. */
+GLIDESHIM_API FxBool glideShimWritePng(GrBuffer_t buffer, const char *path);
+
+/* Number of pixels that passed every test and were written by draw calls since the last reset:
+ * a direct count (GL occlusion query), used by tests of depth invariance. */
+GLIDESHIM_API FxU32 glideShimPixelsWritten(void);
+GLIDESHIM_API void glideShimResetPixelsWritten(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GLIDE_SHIM_H */

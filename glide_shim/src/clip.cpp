@@ -1,0 +1,76 @@
+// guDrawTriangleWithClip, as 3dfx's guclip.c does it: triangles inside the clip window go
+// straight to the rasteriser; the rest are clipped in screen space (right, bottom, left, top),
+// every attribute interpolated linearly, and drawn as a fan. There is no near-plane clipping:
+// the program must keep w > 0, as on the hardware.
+#include "draw.h"
+
+#include <vector>
+
+namespace glide_shim {
+namespace {
+
+ShimVertex lerp(const ShimVertex &a, const ShimVertex &b, float t) {
+  auto mix = [t](float u, float v) { return u + (v - u) * t; };
+  return {mix(a.x, b.x),     mix(a.y, b.y),     mix(a.depth, b.depth), mix(a.r, b.r),
+          mix(a.g, b.g),     mix(a.b, b.b),     mix(a.a, b.a),         mix(a.sow, b.sow),
+          mix(a.tow, b.tow), mix(a.q, b.q)};
+}
+
+// Keeps the part of `polygon` where sign * (coordinate - bound) >= 0.
+std::vector<ShimVertex> clip_edge(const std::vector<ShimVertex> &polygon, bool use_x, float bound,
+                                  float sign) {
+  std::vector<ShimVertex> out;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ShimVertex &p = polygon[i];
+    const ShimVertex &q = polygon[(i + 1) % n];
+    const float dp = sign * ((use_x ? p.x : p.y) - bound);
+    const float dq = sign * ((use_x ? q.x : q.y) - bound);
+    if (dp >= 0.0f) out.push_back(p);
+    if ((dp >= 0.0f) != (dq >= 0.0f)) out.push_back(lerp(p, q, dp / (dp - dq)));
+  }
+  return out;
+}
+
+}  // namespace
+}  // namespace glide_shim
+
+using glide_shim::current;
+using glide_shim::ShimVertex;
+
+extern "C" {
+
+void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
+  auto &ctx = current();
+  if (!ctx.require_open("guDrawTriangleWithClip")) return;
+  if (a == nullptr || b == nullptr || c == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "guDrawTriangleWithClip: a vertex pointer is NULL");
+    return;
+  }
+  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
+  std::vector<ShimVertex> polygon(3);
+  if (!glide_shim::to_shim_vertex(ctx, fields, *a, polygon[0], "guDrawTriangleWithClip") ||
+      !glide_shim::to_shim_vertex(ctx, fields, *b, polygon[1], "guDrawTriangleWithClip") ||
+      !glide_shim::to_shim_vertex(ctx, fields, *c, polygon[2], "guDrawTriangleWithClip")) {
+    return;
+  }
+  const auto &clip = ctx.raster.clip;
+  const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
+  const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
+  bool inside = true;
+  for (const ShimVertex &v : polygon) {
+    inside = inside && v.x >= min_x && v.x < max_x && v.y >= min_y && v.y < max_y;
+  }
+  if (!inside) {
+    polygon = glide_shim::clip_edge(polygon, true, max_x, -1.0f);
+    polygon = glide_shim::clip_edge(polygon, false, max_y, -1.0f);
+    polygon = glide_shim::clip_edge(polygon, true, min_x, 1.0f);
+    polygon = glide_shim::clip_edge(polygon, false, min_y, 1.0f);
+    for (ShimVertex &v : polygon) v.x = glide_shim::snap(v.x), v.y = glide_shim::snap(v.y);
+  }
+  for (std::size_t i = 2; i < polygon.size(); ++i) {
+    glide_shim::queue_triangle(ctx, polygon[0], polygon[i - 1], polygon[i]);
+  }
+}
+
+}  // extern "C"

@@ -1,0 +1,165 @@
+// GlideContext: the one explicit object behind the Glide API. It holds one group per Glide
+// chapter, each with the defaults grSstWinOpen loads, plus the GL renderer once a window is open.
+// gr* entry points check their arguments, then change one group; the renderer reads the groups
+// when it draws. The only global is the pointer returned by current().
+#pragma once
+
+#include <glide.h>
+
+#include "glide_shim.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glide_shim {
+
+class GlRenderer;
+
+struct CombineUnit {  // grColorCombine / grAlphaCombine
+  GrCombineFunction_t function;
+  GrCombineFactor_t factor;
+  GrCombineLocal_t local;
+  GrCombineOther_t other;
+  bool invert;
+  bool operator==(const CombineUnit &o) const {
+    return function == o.function && factor == o.factor && local == o.local &&
+           other == o.other && invert == o.invert;
+  }
+};
+
+struct TexCombineUnit {  // grTexCombine, for one TMU
+  GrCombineFunction_t rgb_function;
+  GrCombineFactor_t rgb_factor;
+  GrCombineFunction_t alpha_function;
+  GrCombineFactor_t alpha_factor;
+  bool rgb_invert;
+  bool alpha_invert;
+  bool operator==(const TexCombineUnit &o) const {
+    return rgb_function == o.rgb_function && rgb_factor == o.rgb_factor &&
+           alpha_function == o.alpha_function && alpha_factor == o.alpha_factor &&
+           rgb_invert == o.rgb_invert && alpha_invert == o.alpha_invert;
+  }
+};
+
+struct ColorPathState {
+  CombineUnit color;
+  CombineUnit alpha;
+  GrColor_t constant_color;  // in the window's colour format (ARGB or ABGR)
+};
+
+struct BlendState {
+  GrAlphaBlendFnc_t rgb_src, rgb_dst, alpha_src, alpha_dst;
+  GrCmpFnc_t alpha_test_function;
+  GrAlpha_t alpha_test_reference;  // 0..255
+};
+
+struct ChromaKeyState {
+  GrChromakeyMode_t mode;
+  GrColor_t value;  // in the window's colour format
+};
+
+struct DepthState {
+  GrDepthBufferMode_t mode;
+  GrCmpFnc_t function;
+  bool mask;         // depth writes
+  FxI16 bias_level;  // signed, in depth-code units
+};
+
+struct ClipRect {  // screen pixels in the current origin; max is exclusive
+  FxU32 min_x, min_y, max_x, max_y;
+};
+
+struct RasterState {
+  GrCullMode_t cull;
+  GrDitherMode_t dither;
+  ClipRect clip;
+  bool rgb_mask;
+  bool alpha_mask;
+  GrBuffer_t render_buffer;
+  GrOriginLocation_t origin;
+  FxU32 stw_hint;  // GR_HINT_STWHINT bits
+};
+
+struct TextureSource {  // what grTexSource points TMU0 at
+  bool valid;
+  FxU32 address;  // byte address in TMU memory
+  GrLOD_t small_lod, large_lod;
+  GrAspectRatio_t aspect;
+  GrTextureFormat_t format;
+};
+
+struct TmuState {
+  GrTextureClampMode_t clamp_s, clamp_t;
+  GrTextureFilterMode_t min_filter, mag_filter;
+  GrMipMapMode_t mipmap_mode;
+  bool lod_blend;
+  float lod_bias;
+  TexCombineUnit combine;
+  TextureSource source;
+  std::vector<std::uint8_t> memory;  // the TMU's texture RAM; downloads write raw bytes here
+};
+
+struct DisplayState {
+  bool open;
+  int width, height;
+  GrColorFormat_t color_format;
+  float gamma;
+  int swaps;  // frames shown so far, for the frame dump's file names
+  int none_width = 640, none_height = 480;  // the size GR_RESOLUTION_NONE opens
+};
+
+struct LfbLockState {
+  bool read_locked, write_locked;
+  GrBuffer_t write_buffer;
+  GrOriginLocation_t write_origin;
+  std::vector<FxU16> read_pixels, write_pixels;  // whole-screen 565 copies handed to the app
+};
+
+struct ErrorState {
+  GrErrorCallbackFnc_t callback;
+  GlideShimError last;
+  std::string message;
+};
+
+constexpr FxU32 kTmuMemoryBytes = 2u * 1024u * 1024u;  // one Voodoo 1 TMU
+constexpr int kMaxScreenSide = 2048;
+
+class GlideContext {
+ public:
+  GlideContext();
+  ~GlideContext();
+
+  bool initialized = false;  // grGlideInit called and not shut down
+  ColorPathState color_path{};
+  BlendState blend{};
+  ChromaKeyState chroma{};
+  DepthState depth{};
+  RasterState raster{};
+  TmuState tmu{};
+  DisplayState display{};
+  LfbLockState lfb{};
+  ErrorState errors{};
+  std::unique_ptr<GlRenderer> renderer;
+
+  // Loads the defaults grSstWinOpen establishes (gsst.c), group by group.
+  void load_window_defaults(int width, int height, GrColorFormat_t format, GrOriginLocation_t o);
+
+  // Records an error: kept as the last error and sent once to the grErrorSetCallback callback.
+  void report(GlideShimError kind, const std::string &message);
+  // Guard for entry points that need an open window; reports and returns false otherwise.
+  bool require_open(const char *function);
+  // Draws queued triangles before a state change; a no-op before grSstWinOpen.
+  void flush();
+};
+
+GlideContext &current();
+
+// Decodes a GrColor_t in the window's format to 8-bit R, G, B, A.
+struct Rgba8 {
+  std::uint8_t r, g, b, a;
+};
+Rgba8 unpack_color(GrColor_t color, GrColorFormat_t format);
+
+}  // namespace glide_shim

@@ -1,0 +1,26 @@
+// From the program's GrVertex to the shim's vertex: only the fields the current state reads are
+// taken (programs leave the rest uninitialised), checked, and snapped to the 12.4 grid.
+#pragma once
+
+#include "context.h"
+#include "gl_renderer.h"
+
+namespace glide_shim {
+
+struct VertexFields {  // which GrVertex fields the current state reads
+  bool rgb, alpha, ooz, oow, texture;
+};
+
+VertexFields fields_read(const GlideContext &context);
+
+// False (with an error reported naming `function`) for NaN, infinity or absurd coordinates.
+bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
+                    ShimVertex &out, const char *function);
+
+// Culls by the signed area of the snapped vertices (zero area is always dropped) and queues.
+void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
+                    const ShimVertex &c);
+
+float snap(float coordinate);  // to 1/16 pixel, as the hardware's 12.4 setup does
+
+}  // namespace glide_shim

@@ -1,0 +1,362 @@
+// The emulated frame buffer and the draw path: queued primitives are drawn with one generated
+// program per distinct combine/test state, into RGB565 colour buffers that stand for the
+// Voodoo's front and back buffers, sharing one depth buffer as the Voodoo's aux buffer does.
+#include "gl_renderer.h"
+
+#include "context.h"
+
+#include <cstddef>
+
+namespace glide_shim {
+namespace {
+
+enum Attribute : unsigned { kPosition = 0, kDepth = 1, kColor = 2, kStq = 3 };
+
+GLenum gl_compare(GrCmpFnc_t function, bool inverted) {
+  // In W-buffer mode GL stores 1/w, which falls as the Voodoo's depth code rises, so every
+  // ordering comparison turns around; equality and the constant functions do not.
+  switch (function) {
+    case GR_CMP_NEVER: return GL_NEVER;
+    case GR_CMP_LESS: return inverted ? GL_GREATER : GL_LESS;
+    case GR_CMP_EQUAL: return GL_EQUAL;
+    case GR_CMP_LEQUAL: return inverted ? GL_GEQUAL : GL_LEQUAL;
+    case GR_CMP_GREATER: return inverted ? GL_LESS : GL_GREATER;
+    case GR_CMP_NOTEQUAL: return GL_NOTEQUAL;
+    case GR_CMP_GEQUAL: return inverted ? GL_LEQUAL : GL_GEQUAL;
+    default: return GL_ALWAYS;
+  }
+}
+
+GLenum gl_blend_factor(GrAlphaBlendFnc_t factor, bool source) {
+  switch (factor) {
+    case GR_BLEND_ZERO: return GL_ZERO;
+    case GR_BLEND_SRC_ALPHA: return GL_SRC_ALPHA;
+    case GR_BLEND_SRC_COLOR: return source ? GL_DST_COLOR : GL_SRC_COLOR;  // value 2
+    case GR_BLEND_DST_ALPHA: return GL_DST_ALPHA;  // 565 has no alpha planes: reads as 1
+    case GR_BLEND_ONE: return GL_ONE;
+    case GR_BLEND_ONE_MINUS_SRC_ALPHA: return GL_ONE_MINUS_SRC_ALPHA;
+    case GR_BLEND_ONE_MINUS_SRC_COLOR:  // value 6
+      return source ? GL_ONE_MINUS_DST_COLOR : GL_ONE_MINUS_SRC_COLOR;
+    case GR_BLEND_ONE_MINUS_DST_ALPHA: return GL_ONE_MINUS_DST_ALPHA;
+    default:  // 0xF: ALPHA_SATURATE as a source; PREFOG_COLOR (the colour, no fog yet) as a dest
+      return source ? GL_SRC_ALPHA_SATURATE : GL_SRC_COLOR;
+  }
+}
+
+unsigned compile(const GlFunctions &gl, GLenum stage, const std::string &source,
+                 std::string &error) {
+  const unsigned shader = gl.glCreateShader(stage);
+  const char *text = source.c_str();
+  gl.glShaderSource(shader, 1, &text, nullptr);
+  gl.glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048] = {};
+    gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    error = std::string("shader compile failed: ") + log;
+    gl.glDeleteShader(shader);
+    return 0;
+  }
+  return shader;
+}
+
+}  // namespace
+
+GlRenderer::GlRenderer(GlideContext &context, std::unique_ptr<Backend> backend, int width,
+                       int height)
+    : context_(context), backend_(std::move(backend)), width_(width), height_(height) {}
+
+GlRenderer::~GlRenderer() {
+  const GlFunctions &gl = backend_->gl;
+  textures_.release(gl);
+  for (auto &entry : programs_) gl.glDeleteProgram(entry.second.program);
+  if (query_ != 0) gl.glDeleteQueries(1, &query_);
+  gl.glDeleteFramebuffers(1, &framebuffer_);
+  gl.glDeleteRenderbuffers(2, color_buffers_);
+  gl.glDeleteRenderbuffers(1, &depth_buffer_);
+}
+
+std::unique_ptr<GlRenderer> GlRenderer::create(GlideContext &context, BackendKind kind,
+                                               int width, int height, std::string &error) {
+  std::unique_ptr<Backend> backend = create_backend(kind, error);
+  if (!backend) return nullptr;
+  std::unique_ptr<GlRenderer> renderer(
+      new GlRenderer(context, std::move(backend), width, height));
+  if (!renderer->build_framebuffer(error)) return nullptr;
+  return renderer;
+}
+
+bool GlRenderer::build_framebuffer(std::string &error) {
+  const GlFunctions &gl = backend_->gl;
+  gl.glGenFramebuffers(1, &framebuffer_);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glGenRenderbuffers(2, color_buffers_);
+  for (int i = 0; i < 2; ++i) {
+    gl.glBindRenderbuffer(GL_RENDERBUFFER, color_buffers_[i]);
+    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGB565, width_, height_);
+    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i),
+                                 GL_RENDERBUFFER, color_buffers_[i]);
+  }
+  // 24 bits hold 1/w finely enough for w up to ~1e4 per unit step; stencil is for the shadow
+  // volume technique that draws in plain GL between Glide calls.
+  gl.glGenRenderbuffers(1, &depth_buffer_);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width_, height_);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                               depth_buffer_);
+  if (gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    error = "the RGB565 + depth framebuffer object is incomplete";
+    return false;
+  }
+  gl.glViewport(0, 0, width_, height_);
+  gl.glDisable(GL_DITHER);  // the shader does the Voodoo's dither itself
+  gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.glGenQueries(1, &query_);
+  return true;
+}
+
+int GlRenderer::buffer_index(GrBuffer_t buffer) const {
+  return buffer == GR_BUFFER_FRONTBUFFER ? front_ : 1 - front_;
+}
+
+void GlRenderer::swap_buffers() {
+  flush();
+  front_ = 1 - front_;
+}
+
+const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
+  const std::string name = key.defines();
+  auto found = programs_.find(name);
+  if (found != programs_.end()) return &found->second;
+
+  const GlFunctions &gl = backend_->gl;
+  std::string error;
+  const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(), error);
+  const unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(key), error) : 0;
+  if (fs == 0) {
+    if (vs) gl.glDeleteShader(vs);
+    context_.report(GLIDESHIM_ERR_BACKEND, error);
+    return nullptr;
+  }
+  ShaderProgram program;
+  program.program = gl.glCreateProgram();
+  gl.glAttachShader(program.program, vs);
+  gl.glAttachShader(program.program, fs);
+  gl.glBindAttribLocation(program.program, kPosition, "a_position");
+  gl.glBindAttribLocation(program.program, kDepth, "a_depth");
+  gl.glBindAttribLocation(program.program, kColor, "a_color");
+  gl.glBindAttribLocation(program.program, kStq, "a_stq");
+  gl.glLinkProgram(program.program);
+  gl.glDeleteShader(vs);
+  gl.glDeleteShader(fs);
+  GLint linked = GL_FALSE;
+  gl.glGetProgramiv(program.program, GL_LINK_STATUS, &linked);
+  if (linked != GL_TRUE) {
+    char log[2048] = {};
+    gl.glGetProgramInfoLog(program.program, sizeof log, nullptr, log);
+    gl.glDeleteProgram(program.program);
+    context_.report(GLIDESHIM_ERR_BACKEND, std::string("shader link failed: ") + log);
+    return nullptr;
+  }
+  auto location = [&](const char *uniform) {
+    return gl.glGetUniformLocation(program.program, uniform);
+  };
+  program.screen = location("u_screen");
+  program.y_down = location("u_y_down");
+  program.constant = location("u_constant");
+  program.chroma = location("u_chroma");
+  program.alpha_ref = location("u_alpha_ref");
+  program.texture = location("u_texture");
+  program.tex_size = location("u_tex_size");
+  program.tex_scale = location("u_tex_scale");
+  program.tex_max = location("u_tex_max");
+  program.screen_height = location("u_screen_height");
+  return &programs_.emplace(name, program).first->second;
+}
+
+void GlRenderer::apply_fixed_function_state() {
+  const GlFunctions &gl = backend_->gl;
+  const RasterState &raster = context_.raster;
+  gl.glDrawBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + buffer_index(raster.render_buffer)));
+
+  // The clip window is in the Glide origin; GL's scissor counts rows from the bottom.
+  const ClipRect &clip = raster.clip;
+  const int clip_bottom = raster.origin == GR_ORIGIN_UPPER_LEFT
+                              ? height_ - static_cast<int>(clip.max_y)
+                              : static_cast<int>(clip.min_y);
+  gl.glEnable(GL_SCISSOR_TEST);
+  gl.glScissor(static_cast<int>(clip.min_x), clip_bottom,
+               static_cast<int>(clip.max_x - clip.min_x), static_cast<int>(clip.max_y - clip.min_y));
+  const GLboolean rgb = raster.rgb_mask ? GL_TRUE : GL_FALSE;
+  gl.glColorMask(rgb, rgb, rgb, GL_FALSE);
+
+  const DepthState &depth = context_.depth;
+  if (depth.mode == GR_DEPTHBUFFER_DISABLE) {
+    gl.glDisable(GL_DEPTH_TEST);
+  } else {
+    const bool w_buffer = depth.mode == GR_DEPTHBUFFER_WBUFFER;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glDepthFunc(gl_compare(depth.function, w_buffer));
+    gl.glDepthMask(depth.mask ? GL_TRUE : GL_FALSE);
+  }
+
+  const BlendState &blend = context_.blend;
+  if (blend.rgb_src == GR_BLEND_ONE && blend.rgb_dst == GR_BLEND_ZERO) {
+    gl.glDisable(GL_BLEND);
+  } else {
+    // SST-1 forces the alpha factors to ONE/ZERO; with no alpha planes they change nothing.
+    gl.glEnable(GL_BLEND);
+    gl.glBlendFunc(gl_blend_factor(blend.rgb_src, true), gl_blend_factor(blend.rgb_dst, false));
+  }
+}
+
+void GlRenderer::queue(Primitive primitive, const ShimVertex *vertices, int count) {
+  if (primitive != primitive_) {
+    flush();
+    primitive_ = primitive;
+  }
+  queue_.insert(queue_.end(), vertices, vertices + count);
+}
+
+void GlRenderer::flush() {
+  if (queue_.empty()) return;
+  const GlFunctions &gl = backend_->gl;
+  const PipelineKey key = pipeline_key(context_);
+  const ShaderProgram *program = program_for(key);
+  if (program == nullptr) {
+    queue_.clear();
+    return;
+  }
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  apply_fixed_function_state();
+  gl.glUseProgram(program->program);
+  gl.glUniform2f(program->screen, static_cast<float>(width_), static_cast<float>(height_));
+  gl.glUniform1f(program->y_down, context_.raster.origin == GR_ORIGIN_UPPER_LEFT ? 1.0f : 0.0f);
+  gl.glUniform1f(program->screen_height, static_cast<float>(height_));
+  const Rgba8 constant =
+      unpack_color(context_.color_path.constant_color, context_.display.color_format);
+  gl.glUniform4f(program->constant, constant.r, constant.g, constant.b, constant.a);
+  const Rgba8 key_color = unpack_color(context_.chroma.value, context_.display.color_format);
+  gl.glUniform4f(program->chroma, key_color.r, key_color.g, key_color.b, 0.0f);
+  gl.glUniform1f(program->alpha_ref, context_.blend.alpha_test_reference);
+  if (key.texture && context_.tmu.source.valid) {
+    const BoundTexture bound = textures_.bind(gl, context_.tmu);
+    gl.glUniform1i(program->texture, 0);
+    gl.glUniform2f(program->tex_size, bound.width, bound.height);
+    gl.glUniform1f(program->tex_scale, bound.scale);
+    gl.glUniform4f(program->tex_max, bound.channel_max[0], bound.channel_max[1],
+                   bound.channel_max[2], bound.channel_max[3]);
+  } else if (key.texture) {
+    // No grTexSource yet: a texture of size 1 reading texel zero of an unbound unit (0,0,0,0).
+    gl.glBindTexture(GL_TEXTURE_2D, 0);
+    gl.glUniform2f(program->tex_size, 1.0f, 1.0f);
+    gl.glUniform1f(program->tex_scale, 1.0f);
+    gl.glUniform4f(program->tex_max, 255.0f, 255.0f, 255.0f, 255.0f);
+  }
+
+  const GLsizei stride = sizeof(ShimVertex);
+  const char *base = reinterpret_cast<const char *>(queue_.data());
+  gl.glVertexAttribPointer(kPosition, 2, GL_FLOAT, GL_FALSE, stride,
+                           base + offsetof(ShimVertex, x));
+  gl.glVertexAttribPointer(kDepth, 1, GL_FLOAT, GL_FALSE, stride,
+                           base + offsetof(ShimVertex, depth));
+  gl.glVertexAttribPointer(kColor, 4, GL_FLOAT, GL_FALSE, stride, base + offsetof(ShimVertex, r));
+  gl.glVertexAttribPointer(kStq, 3, GL_FLOAT, GL_FALSE, stride,
+                           base + offsetof(ShimVertex, sow));
+  for (unsigned attribute : {kPosition, kDepth, kColor, kStq}) {
+    gl.glEnableVertexAttribArray(attribute);
+  }
+  const GLenum mode = primitive_ == Primitive::Triangles ? GL_TRIANGLES
+                      : primitive_ == Primitive::Lines   ? GL_LINES
+                                                         : GL_POINTS;
+  if (counting_) gl.glBeginQuery(GL_SAMPLES_PASSED, query_);
+  gl.glDrawArrays(mode, 0, static_cast<GLsizei>(queue_.size()));
+  if (counting_) {
+    gl.glEndQuery(GL_SAMPLES_PASSED);
+    GLuint passed = 0;
+    gl.glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &passed);
+    pixels_counted_ += passed;
+  }
+  queue_.clear();
+}
+
+void GlRenderer::start_counting() {
+  flush();
+  counting_ = true;
+  pixels_counted_ = 0;
+}
+
+void GlRenderer::clear(std::uint16_t rgb565, bool color, double gl_depth, bool depth) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  apply_fixed_function_state();
+  GLbitfield mask = 0;
+  if (color && context_.raster.rgb_mask) {
+    // Exact 565 levels, so GL's float-to-565 conversion cannot round them elsewhere.
+    gl.glClearColor(static_cast<float>(rgb565 >> 11) / 31.0f,
+                    static_cast<float>((rgb565 >> 5) & 0x3F) / 63.0f,
+                    static_cast<float>(rgb565 & 0x1F) / 31.0f, 1.0f);
+    mask |= GL_COLOR_BUFFER_BIT;
+  }
+  if (depth) {
+    gl.glDepthMask(GL_TRUE);
+    gl.glClearDepth(gl_depth);
+    mask |= GL_DEPTH_BUFFER_BIT;
+  }
+  if (mask != 0) gl.glClear(mask);
+}
+
+void GlRenderer::read_color(int index, int x, int y, int w, int h, std::uint16_t *dst,
+                            std::size_t stride) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glReadBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + index));
+  // GL row 0 is the bottom; read the block in one call, then hand rows out top first.
+  std::vector<std::uint16_t> block(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  gl.glReadPixels(x, height_ - (y + h), w, h, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, block.data());
+  auto *out = reinterpret_cast<std::uint8_t *>(dst);
+  for (int row = 0; row < h; ++row) {
+    const std::uint16_t *line = block.data() + static_cast<std::size_t>(h - 1 - row) * w;
+    std::copy(line, line + w, reinterpret_cast<std::uint16_t *>(out + row * stride));
+  }
+}
+
+void GlRenderer::write_color(int index, int x, int y, int w, int h, const std::uint16_t *src,
+                             std::size_t stride) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  std::vector<std::uint16_t> block(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  const auto *in = reinterpret_cast<const std::uint8_t *>(src);
+  for (int row = 0; row < h; ++row) {
+    const auto *line = reinterpret_cast<const std::uint16_t *>(in + row * stride);
+    std::copy(line, line + w, block.data() + static_cast<std::size_t>(h - 1 - row) * w);
+  }
+  // LFB writes bypass the pixel pipeline: fixed function with every test and blend off.
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glDrawBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + index));
+  gl.glUseProgram(0);
+  gl.glDisable(GL_SCISSOR_TEST);
+  gl.glDisable(GL_DEPTH_TEST);
+  gl.glDisable(GL_BLEND);
+  gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  gl.glWindowPos2i(x, height_ - (y + h));
+  gl.glDrawPixels(w, h, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, block.data());
+}
+
+void GlRenderer::read_depth(int x, int y, int w, int h, float *dst) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  std::vector<float> block(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  gl.glReadPixels(x, height_ - (y + h), w, h, GL_DEPTH_COMPONENT, GL_FLOAT, block.data());
+  for (int row = 0; row < h; ++row) {
+    const float *line = block.data() + static_cast<std::size_t>(h - 1 - row) * w;
+    std::copy(line, line + w, dst + static_cast<std::size_t>(row) * w);
+  }
+}
+
+}  // namespace glide_shim

@@ -1,0 +1,82 @@
+// The GL side of the shim: the emulated frame buffer (two RGB565 colour buffers and one depth
+// buffer in a framebuffer object), the queue of primitives waiting to be drawn, and the
+// translation of the context's state into a generated shader and fixed-function settings.
+#pragma once
+
+#include "backend.h"
+#include "shader_source.h"
+#include "texture_cache.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glide_shim {
+
+class GlideContext;
+
+// One vertex as the GPU receives it. Only fields the current state reads were taken from the
+// program's GrVertex; the rest are zero.
+struct ShimVertex {
+  float x, y;           // screen pixels in the Glide origin, snapped to 1/16 (12.4 fixed point)
+  float depth;          // GL window depth [0,1]: 1/w for the W-buffer, ooz/65535 for the Z-buffer
+  float r, g, b, a;     // iterated colour, 0..255
+  float sow, tow, q;    // texture numerators and divisor (oow or tmuvtx[0].oow), screen-linear
+};
+
+enum class Primitive { Triangles, Lines, Points };
+
+class GlRenderer {
+ public:
+  // Makes the backend's context, the frame buffer and the vertex shader; null on failure.
+  static std::unique_ptr<GlRenderer> create(GlideContext &context, BackendKind kind, int width,
+                                            int height, std::string &error);
+  ~GlRenderer();
+
+  const char *backend_name() const { return backend_->name(); }
+  const GlFunctions &gl() const { return backend_->gl; }
+
+  void queue(Primitive primitive, const ShimVertex *vertices, int count);
+  void flush();  // draws the queue with the context's current state
+
+  // Fills the clip window of the current render buffer; colour and depth each optional.
+  void clear(std::uint16_t rgb565, bool color, double gl_depth, bool depth);
+  void swap_buffers();
+  int buffer_index(GrBuffer_t buffer) const;  // colour attachment behind FRONT or BACK
+
+  // Region access with an upper-left origin, in the frame buffer's own 565 words.
+  void read_color(int index, int x, int y, int w, int h, std::uint16_t *dst, std::size_t stride);
+  void write_color(int index, int x, int y, int w, int h, const std::uint16_t *src,
+                   std::size_t stride);
+  void read_depth(int x, int y, int w, int h, float *dst);  // GL window depth [0,1]
+
+  TextureCache &textures() { return textures_; }
+
+  void start_counting();
+  std::uint32_t pixels_counted() const { return pixels_counted_; }
+
+ private:
+  GlRenderer(GlideContext &context, std::unique_ptr<Backend> backend, int width, int height);
+  bool build_framebuffer(std::string &error);
+  const ShaderProgram *program_for(const PipelineKey &key);
+  void apply_fixed_function_state();
+
+  GlideContext &context_;
+  std::unique_ptr<Backend> backend_;
+  int width_, height_;
+  unsigned framebuffer_ = 0;
+  unsigned color_buffers_[2] = {0, 0};
+  unsigned depth_buffer_ = 0;
+  int front_ = 0;  // the attachment scanned out; the other one is the back buffer
+  Primitive primitive_ = Primitive::Triangles;
+  std::vector<ShimVertex> queue_;
+  std::map<std::string, ShaderProgram> programs_;
+  TextureCache textures_;
+  bool counting_ = false;
+  unsigned query_ = 0;
+  std::uint32_t pixels_counted_ = 0;
+};
+
+}  // namespace glide_shim

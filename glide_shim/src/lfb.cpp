@@ -1,0 +1,239 @@
+// Chapter "linear frame buffer": locks and region copies. Reads return the raw 16-bit words the
+// pipeline wrote (565 colour, or depth codes from the aux buffer), always exact, which is what
+// lets a program reinterpret a rendered frame as an ARGB_4444 texture.
+#include "context.h"
+#include "depth.h"
+#include "gl_renderer.h"
+
+#include <cstring>
+#include <string>
+
+using glide_shim::current;
+
+namespace {
+
+bool is_lfb_buffer(GrBuffer_t buffer) {
+  return buffer == GR_BUFFER_FRONTBUFFER || buffer == GR_BUFFER_BACKBUFFER ||
+         buffer == GR_BUFFER_AUXBUFFER;
+}
+
+bool region_inside(FxU32 x, FxU32 y, FxU32 w, FxU32 h) {
+  const auto &display = current().display;
+  const auto width = static_cast<FxU32>(display.width), height = static_cast<FxU32>(display.height);
+  return w > 0 && h > 0 && x < width && y < height && w <= width - x && h <= height - y;
+}
+
+std::string region_text(FxU32 x, FxU32 y, FxU32 w, FxU32 h) {
+  const auto &display = current().display;
+  return std::to_string(w) + "x" + std::to_string(h) + " at (" + std::to_string(x) + "," +
+         std::to_string(y) + ") is not inside the " + std::to_string(display.width) + "x" +
+         std::to_string(display.height) + " buffer";
+}
+
+// Reads a region of `buffer` as 16-bit words with an upper-left origin.
+void read_words(GrBuffer_t buffer, int x, int y, int w, int h, std::uint16_t *dst,
+                std::size_t stride) {
+  auto &ctx = current();
+  if (buffer != GR_BUFFER_AUXBUFFER) {
+    ctx.renderer->read_color(ctx.renderer->buffer_index(buffer), x, y, w, h, dst, stride);
+    return;
+  }
+  std::vector<float> depth(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  ctx.renderer->read_depth(x, y, w, h, depth.data());
+  const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
+  auto *out = reinterpret_cast<std::uint8_t *>(dst);
+  for (int row = 0; row < h; ++row) {
+    auto *line = reinterpret_cast<std::uint16_t *>(out + static_cast<std::size_t>(row) * stride);
+    for (int col = 0; col < w; ++col) {
+      line[col] = glide_shim::code_from_gl_depth(depth[static_cast<std::size_t>(row * w + col)],
+                                                 w_buffer);
+    }
+  }
+}
+
+// One source pixel of grLfbWriteRegion as a 565 word (8-bit channels truncate, dither off).
+std::uint16_t to_565(GrLfbSrcFmt_t format, const std::uint8_t *p) {
+  std::uint16_t word;
+  std::uint32_t dword;
+  switch (format) {
+    case GR_LFB_SRC_FMT_565: std::memcpy(&word, p, 2); return word;
+    case GR_LFB_SRC_FMT_555:
+    case GR_LFB_SRC_FMT_1555:  // x/a in bit 15, then 5-5-5: green widens by replication
+      std::memcpy(&word, p, 2);
+      return static_cast<std::uint16_t>(((word & 0x7C00) << 1) |
+                                        (((word >> 5) & 0x1F) << 6) |
+                                        ((((word >> 5) & 0x1F) >> 4) << 5) | (word & 0x1F));
+    default:  // 888 and 8888: 32-bit words, 0xAARRGGBB
+      std::memcpy(&dword, p, 4);
+      return static_cast<std::uint16_t>((((dword >> 16) & 0xFF) >> 3) << 11 |
+                                        (((dword >> 8) & 0xFF) >> 2) << 5 | ((dword & 0xFF) >> 3));
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
+                 GrOriginLocation_t origin, FxBool pixelPipeline, GrLfbInfo_t *info) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbLock")) return FXFALSE;
+  const GrLock_t access = type & ~GR_LFB_NOIDLE;
+  if (info == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grLfbLock: info is NULL");
+    return FXFALSE;
+  }
+  if (info->size != static_cast<int>(sizeof(GrLfbInfo_t))) {
+    ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbLock: info->size must be sizeof(GrLfbInfo_t)");
+    return FXFALSE;
+  }
+  if ((access != GR_LFB_READ_ONLY && access != GR_LFB_WRITE_ONLY) || !is_lfb_buffer(buffer) ||
+      (origin != GR_ORIGIN_UPPER_LEFT && origin != GR_ORIGIN_LOWER_LEFT)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grLfbLock: unknown lock type, buffer or origin");
+    return FXFALSE;
+  }
+  const bool reading = access == GR_LFB_READ_ONLY;
+  if (reading ? ctx.lfb.read_locked : ctx.lfb.write_locked) {
+    ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbLock: this lock type is already held");
+    return FXFALSE;
+  }
+  if (!reading && (pixelPipeline != FXFALSE || buffer == GR_BUFFER_AUXBUFFER ||
+                   (writeMode != GR_LFBWRITEMODE_565 && writeMode != GR_LFBWRITEMODE_ANY))) {
+    ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
+               "grLfbLock: write locks support only 565 colour without the pixel pipeline yet");
+    return FXFALSE;
+  }
+  const int w = ctx.display.width, h = ctx.display.height;
+  std::vector<std::uint16_t> &pixels = reading ? ctx.lfb.read_pixels : ctx.lfb.write_pixels;
+  pixels.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  // A write lock starts from the buffer's contents, so pixels the program skips survive.
+  read_words(buffer, 0, 0, w, h, pixels.data(), static_cast<std::size_t>(w) * 2);
+  if (origin == GR_ORIGIN_LOWER_LEFT) {
+    for (int row = 0; row < h / 2; ++row) {
+      std::swap_ranges(pixels.begin() + row * w, pixels.begin() + (row + 1) * w,
+                       pixels.begin() + (h - 1 - row) * w);
+    }
+  }
+  if (reading) {
+    ctx.lfb.read_locked = true;
+  } else {
+    ctx.lfb.write_locked = true;
+    ctx.lfb.write_buffer = buffer;
+    ctx.lfb.write_origin = origin;
+  }
+  info->lfbPtr = pixels.data();
+  info->strideInBytes = static_cast<FxU32>(w) * 2;
+  info->writeMode = buffer == GR_BUFFER_AUXBUFFER ? GR_LFBWRITEMODE_ZA16 : GR_LFBWRITEMODE_565;
+  info->origin = origin;
+  return FXTRUE;
+}
+
+FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbUnlock")) return FXFALSE;
+  const GrLock_t access = type & ~GR_LFB_NOIDLE;
+  if (access == GR_LFB_READ_ONLY && ctx.lfb.read_locked) {
+    ctx.lfb.read_locked = false;
+    return FXTRUE;
+  }
+  if (access == GR_LFB_WRITE_ONLY && ctx.lfb.write_locked && buffer == ctx.lfb.write_buffer) {
+    const int w = ctx.display.width, h = ctx.display.height;
+    std::vector<std::uint16_t> &pixels = ctx.lfb.write_pixels;
+    if (ctx.lfb.write_origin == GR_ORIGIN_LOWER_LEFT) {
+      for (int row = 0; row < h / 2; ++row) {
+        std::swap_ranges(pixels.begin() + row * w, pixels.begin() + (row + 1) * w,
+                         pixels.begin() + (h - 1 - row) * w);
+      }
+    }
+    ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), 0, 0, w, h, pixels.data(),
+                              static_cast<std::size_t>(w) * 2);
+    ctx.lfb.write_locked = false;
+    return FXTRUE;
+  }
+  ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbUnlock: no such lock is held");
+  return FXFALSE;
+}
+
+FxBool grLfbReadRegion(GrBuffer_t src_buffer, FxU32 src_x, FxU32 src_y, FxU32 src_width,
+                       FxU32 src_height, FxU32 dst_stride, void *dst_data) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbReadRegion")) return FXFALSE;
+  if (!is_lfb_buffer(src_buffer)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grLfbReadRegion: unknown buffer");
+    return FXFALSE;
+  }
+  if (dst_data == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grLfbReadRegion: dst_data is NULL");
+    return FXFALSE;
+  }
+  if (!region_inside(src_x, src_y, src_width, src_height)) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               "grLfbReadRegion: " + region_text(src_x, src_y, src_width, src_height));
+    return FXFALSE;
+  }
+  if (dst_stride < src_width * 2) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grLfbReadRegion: dst_stride " +
+                                               std::to_string(dst_stride) +
+                                               " is less than width * 2 bytes");
+    return FXFALSE;
+  }
+  read_words(src_buffer, static_cast<int>(src_x), static_cast<int>(src_y),
+             static_cast<int>(src_width), static_cast<int>(src_height),
+             static_cast<std::uint16_t *>(dst_data), dst_stride);
+  return FXTRUE;
+}
+
+FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSrcFmt_t src_format,
+                        FxU32 src_width, FxU32 src_height, FxI32 src_stride, void *src_data) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbWriteRegion")) return FXFALSE;
+  if (dst_buffer != GR_BUFFER_FRONTBUFFER && dst_buffer != GR_BUFFER_BACKBUFFER) {
+    ctx.report(dst_buffer == GR_BUFFER_AUXBUFFER ? GLIDESHIM_ERR_UNSUPPORTED
+                                                 : GLIDESHIM_ERR_INVALID_ENUM,
+               "grLfbWriteRegion: only the colour buffers can be written yet");
+    return FXFALSE;
+  }
+  int bytes_per_pixel = 0;
+  switch (src_format) {
+    case GR_LFB_SRC_FMT_565:
+    case GR_LFB_SRC_FMT_555:
+    case GR_LFB_SRC_FMT_1555: bytes_per_pixel = 2; break;
+    case GR_LFB_SRC_FMT_888:
+    case GR_LFB_SRC_FMT_8888: bytes_per_pixel = 4; break;
+    default:
+      ctx.report(GLIDESHIM_ERR_UNSUPPORTED, "grLfbWriteRegion: source format " +
+                                                std::to_string(src_format) + " is not implemented");
+      return FXFALSE;
+  }
+  if (src_data == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grLfbWriteRegion: src_data is NULL");
+    return FXFALSE;
+  }
+  if (!region_inside(dst_x, dst_y, src_width, src_height)) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               "grLfbWriteRegion: " + region_text(dst_x, dst_y, src_width, src_height));
+    return FXFALSE;
+  }
+  if (src_stride < static_cast<FxI32>(src_width) * bytes_per_pixel) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grLfbWriteRegion: src_stride " +
+                                               std::to_string(src_stride) +
+                                               " is less than one row of pixels");
+    return FXFALSE;
+  }
+  std::vector<std::uint16_t> words(static_cast<std::size_t>(src_width) * src_height);
+  const auto *in = static_cast<const std::uint8_t *>(src_data);
+  for (FxU32 row = 0; row < src_height; ++row) {
+    for (FxU32 col = 0; col < src_width; ++col) {
+      words[row * src_width + col] = to_565(
+          src_format, in + static_cast<std::size_t>(row) * static_cast<std::size_t>(src_stride) +
+                          static_cast<std::size_t>(col) * static_cast<std::size_t>(bytes_per_pixel));
+    }
+  }
+  ctx.renderer->write_color(ctx.renderer->buffer_index(dst_buffer), static_cast<int>(dst_x),
+                            static_cast<int>(dst_y), static_cast<int>(src_width),
+                            static_cast<int>(src_height), words.data(),
+                            static_cast<std::size_t>(src_width) * 2);
+  return FXTRUE;
+}
+
+}  // extern "C"

@@ -1,0 +1,41 @@
+// Generated GLSL 1.20 for the Voodoo's per-pixel equations: texture fetch with the TMU's
+// filtering and addressing, the texture, colour and alpha combine units with the hardware's
+// (f+1)>>8 arithmetic, chroma key, alpha test, and the 565 write (truncation or dither).
+#pragma once
+
+#include "context.h"
+
+#include <string>
+
+namespace glide_shim {
+
+// Everything about the state that changes the shader's code. Values (colours, references,
+// texture size) are uniforms, so they never cause a recompile.
+struct PipelineKey {
+  CombineUnit color{};
+  CombineUnit alpha{};
+  TexCombineUnit tex{};
+  bool texture = false;  // the colour path reads the TMU
+  bool bilinear = false;
+  bool wrap_s = false, wrap_t = false;
+  bool chroma_key = false;
+  GrCmpFnc_t alpha_test = GR_CMP_ALWAYS;
+  bool blending = false;  // GL blends the unquantised colour; otherwise the shader writes 565
+  GrDitherMode_t dither = GR_DITHER_DISABLE;
+
+  std::string defines() const;  // also the cache key
+};
+
+PipelineKey pipeline_key(const GlideContext &context);
+bool reads_texture(const ColorPathState &path);
+
+std::string vertex_shader_source();
+std::string fragment_shader_source(const PipelineKey &key);
+
+struct ShaderProgram {
+  unsigned program = 0;
+  int screen = -1, y_down = -1, constant = -1, chroma = -1, alpha_ref = -1, texture = -1,
+      tex_size = -1, tex_scale = -1, tex_max = -1, screen_height = -1;
+};
+
+}  // namespace glide_shim

@@ -1,0 +1,153 @@
+// Uploading TMU memory to GL. The 16-bit formats GL reads natively go up as they are (3-4 us for
+// 256x256, osmesa_notes.md); the shader widens them by bit replication. The others are widened
+// here, once per upload, to RGBA8.
+#include "texture_cache.h"
+
+#include "texture_layout.h"
+
+#include <cstring>
+
+namespace glide_shim {
+namespace {
+
+// The TMU's widening of a `bits`-wide channel to 8 bits: its bits repeated, top 8 kept.
+std::uint8_t replicate(unsigned value, int bits) {
+  unsigned out = 0;
+  int filled = 0;
+  while (filled < 8) {
+    out = (out << bits) | value;
+    filled += bits;
+  }
+  return static_cast<std::uint8_t>(out >> (filled - 8));
+}
+
+void decode_to_rgba8(GrTextureFormat_t format, const std::uint8_t *texels, int count,
+                     std::uint8_t *rgba) {
+  for (int i = 0; i < count; ++i, rgba += 4) {
+    unsigned t = 0;
+    if (bytes_per_texel(format) == 1) {
+      t = texels[i];
+    } else {
+      std::uint16_t word;
+      std::memcpy(&word, texels + 2 * i, 2);
+      t = word;
+    }
+    std::uint8_t r = 0, g = 0, b = 0, a = 255;
+    switch (format) {
+      case GR_TEXFMT_RGB_332:
+        r = replicate((t >> 5) & 7, 3), g = replicate((t >> 2) & 7, 3), b = replicate(t & 3, 2);
+        break;
+      case GR_TEXFMT_ALPHA_8: r = g = b = a = static_cast<std::uint8_t>(t); break;
+      case GR_TEXFMT_INTENSITY_8: r = g = b = static_cast<std::uint8_t>(t); break;
+      case GR_TEXFMT_ALPHA_INTENSITY_44:
+        a = replicate(t >> 4, 4), r = g = b = replicate(t & 0xF, 4);
+        break;
+      case GR_TEXFMT_ARGB_8332:
+        a = static_cast<std::uint8_t>(t >> 8);
+        r = replicate((t >> 5) & 7, 3), g = replicate((t >> 2) & 7, 3), b = replicate(t & 3, 2);
+        break;
+      case GR_TEXFMT_ALPHA_INTENSITY_88:
+        a = static_cast<std::uint8_t>(t >> 8), r = g = b = static_cast<std::uint8_t>(t & 0xFF);
+        break;
+      default: break;
+    }
+    rgba[0] = r, rgba[1] = g, rgba[2] = b, rgba[3] = a;
+  }
+}
+
+struct GlUpload {
+  GLint internal_format;
+  GLenum format, type;
+  float channel_max[4];
+};
+
+// Formats GL stores bit-exactly from the 16-bit words themselves; false for the rest.
+bool native_upload(GrTextureFormat_t format, GlUpload &upload) {
+  switch (format) {
+    case GR_TEXFMT_RGB_565:
+      upload = {GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, {31, 63, 31, 255}};
+      return true;
+    case GR_TEXFMT_ARGB_4444:  // A in bits 15-12: BGRA with the reversed packing
+      upload = {GL_RGBA4, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV, {15, 15, 15, 15}};
+      return true;
+    case GR_TEXFMT_ARGB_1555:
+      upload = {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, {31, 31, 31, 1}};
+      return true;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
+  const TextureSource &source = tmu.source;
+  const LevelSize size = level_size(source.large_lod, source.aspect);
+  Entry *entry = nullptr;
+  for (Entry &candidate : entries_) {
+    const TextureSource &s = candidate.source;
+    if (s.address == source.address && s.format == source.format &&
+        s.large_lod == source.large_lod && s.aspect == source.aspect) {
+      entry = &candidate;
+      break;
+    }
+  }
+  const bool created = entry == nullptr;
+  if (created) {
+    entries_.push_back(Entry{});
+    entry = &entries_.back();
+    entry->source = source;
+    entry->begin = source.address;
+    entry->end = source.address + static_cast<FxU32>(size.width * size.height *
+                                                     bytes_per_texel(source.format));
+    gl.glGenTextures(1, &entry->name);
+  }
+  gl.glActiveTexture(GL_TEXTURE0);
+  gl.glBindTexture(GL_TEXTURE_2D, entry->name);
+
+  GlUpload upload{};
+  const bool native = native_upload(source.format, upload);
+  if (!native) upload = {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, {255, 255, 255, 255}};
+  if (entry->stale) {
+    const std::uint8_t *texels = tmu.memory.data() + source.address;
+    const void *pixels = texels;
+    if (!native) {
+      decoded_.resize(static_cast<std::size_t>(size.width * size.height) * 4);
+      decode_to_rgba8(source.format, texels, size.width * size.height, decoded_.data());
+      pixels = decoded_.data();
+    }
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (created) {
+      // Sampling is done texel by texel in the shader, so GL must never filter.
+      gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      gl.glTexImage2D(GL_TEXTURE_2D, 0, upload.internal_format, size.width, size.height, 0,
+                      upload.format, upload.type, pixels);
+    } else {
+      gl.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.width, size.height, upload.format,
+                         upload.type, pixels);
+    }
+    entry->stale = false;
+  }
+
+  BoundTexture bound;
+  bound.width = static_cast<float>(size.width);
+  bound.height = static_cast<float>(size.height);
+  bound.scale = static_cast<float>(size.width > size.height ? size.width : size.height) / 256.0f;
+  std::memcpy(bound.channel_max, upload.channel_max, sizeof bound.channel_max);
+  return bound;
+}
+
+void TextureCache::invalidate(FxU32 begin, FxU32 end) {
+  for (Entry &entry : entries_) {
+    if (begin < entry.end && entry.begin < end) entry.stale = true;
+  }
+}
+
+void TextureCache::release(const GlFunctions &gl) {
+  for (Entry &entry : entries_) gl.glDeleteTextures(1, &entry.name);
+  entries_.clear();
+}
+
+}  // namespace glide_shim

@@ -1,0 +1,128 @@
+// Chapter "texture download": copying texel data into TMU memory, byte for byte. The format in
+// GrTexInfo only sizes the copy; how the bytes are read is decided later by grTexSource, which is
+// what lets the article download 565 frame-buffer words as an ARGB_4444 texture.
+#include "context.h"
+#include "gl_renderer.h"
+#include "texture_layout.h"
+
+#include <cstring>
+#include <string>
+
+using glide_shim::current;
+
+namespace glide_shim {
+bool check_texture_info(const char *function, GrLOD_t small_lod, GrLOD_t large_lod,
+                        GrAspectRatio_t aspect, GrTextureFormat_t format);
+bool check_tmu(const char *function, GrChipID_t tmu);
+}  // namespace glide_shim
+
+namespace {
+
+bool write_memory(const char *function, FxU32 address, const void *data, FxU32 bytes) {
+  auto &ctx = current();
+  if (address > glide_shim::kTmuMemoryBytes || bytes > glide_shim::kTmuMemoryBytes - address) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               std::string(function) + ": " + std::to_string(bytes) + " bytes at address " +
+                   std::to_string(address) + " run past the end of TMU memory (" +
+                   std::to_string(glide_shim::kTmuMemoryBytes) + " bytes)");
+    return false;
+  }
+  ctx.flush();  // draws already queued must still see the old texels
+  std::memcpy(ctx.tmu.memory.data() + address, data, bytes);
+  ctx.renderer->textures().invalidate(address, address + bytes);
+  return true;
+}
+
+}  // namespace
+
+extern "C" {
+
+void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTexInfo *info) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexDownloadMipMap") || !glide_shim::check_tmu("grTexDownloadMipMap", tmu))
+    return;
+  if (info == nullptr || info->data == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grTexDownloadMipMap: info or info->data is NULL");
+    return;
+  }
+  if (!glide_shim::is_even_odd(evenOdd)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grTexDownloadMipMap: unknown evenOdd mask");
+    return;
+  }
+  if (!glide_shim::check_texture_info("grTexDownloadMipMap", info->smallLod, info->largeLod,
+                                      info->aspectRatio, info->format)) {
+    return;
+  }
+  if (startAddress % 8 != 0) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grTexDownloadMipMap: start address " +
+                                               std::to_string(startAddress) +
+                                               " is not 8-byte aligned");
+    return;
+  }
+  // GrTexInfo.data holds every level largest first; copy the ones evenOdd selects.
+  const auto *source = static_cast<const std::uint8_t *>(info->data);
+  const FxU32 total = glide_shim::level_offset(info->smallLod + 1, info->largeLod,
+                                               info->aspectRatio, info->format,
+                                               GR_MIPMAPLEVELMASK_BOTH);
+  const FxU32 stored = glide_shim::mipmap_bytes(info->smallLod, info->largeLod,
+                                                info->aspectRatio, info->format, evenOdd);
+  if (startAddress > glide_shim::kTmuMemoryBytes || stored > glide_shim::kTmuMemoryBytes - startAddress) {
+    write_memory("grTexDownloadMipMap", startAddress, source, stored);  // reports the overrun
+    return;
+  }
+  if (evenOdd == GR_MIPMAPLEVELMASK_BOTH) {
+    write_memory("grTexDownloadMipMap", startAddress, source, total);
+    return;
+  }
+  for (GrLOD_t lod = info->largeLod; lod <= info->smallLod; ++lod) {
+    const FxU32 from = glide_shim::level_offset(lod, info->largeLod, info->aspectRatio,
+                                                info->format, GR_MIPMAPLEVELMASK_BOTH);
+    const FxU32 to = glide_shim::level_offset(lod, info->largeLod, info->aspectRatio,
+                                              info->format, evenOdd);
+    const FxU32 next = glide_shim::level_offset(lod + 1, info->largeLod, info->aspectRatio,
+                                                info->format, GR_MIPMAPLEVELMASK_BOTH);
+    const bool even = lod % 2 == 0;
+    if (even == (evenOdd == GR_MIPMAPLEVELMASK_EVEN)) {
+      write_memory("grTexDownloadMipMap", startAddress + to, source + from, next - from);
+    }
+  }
+}
+
+void grTexDownloadMipMapLevel(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
+                              GrLOD_t largeLod, GrAspectRatio_t aspectRatio,
+                              GrTextureFormat_t format, FxU32 evenOdd, void *data) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexDownloadMipMapLevel") ||
+      !glide_shim::check_tmu("grTexDownloadMipMapLevel", tmu))
+    return;
+  if (data == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grTexDownloadMipMapLevel: data is NULL");
+    return;
+  }
+  if (!glide_shim::is_even_odd(evenOdd)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grTexDownloadMipMapLevel: unknown evenOdd mask");
+    return;
+  }
+  if (!glide_shim::check_texture_info("grTexDownloadMipMapLevel", thisLod, largeLod, aspectRatio,
+                                      format)) {
+    return;
+  }
+  if (startAddress % 8 != 0) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grTexDownloadMipMapLevel: start address " +
+                                               std::to_string(startAddress) +
+                                               " is not 8-byte aligned");
+    return;
+  }
+  const FxU32 offset =
+      glide_shim::level_offset(thisLod, largeLod, aspectRatio, format, evenOdd);
+  const glide_shim::LevelSize size = glide_shim::level_size(thisLod, aspectRatio);
+  const auto bytes =
+      static_cast<FxU32>(size.width * size.height * glide_shim::bytes_per_texel(format));
+  if (offset > glide_shim::kTmuMemoryBytes || startAddress > glide_shim::kTmuMemoryBytes - offset) {
+    write_memory("grTexDownloadMipMapLevel", glide_shim::kTmuMemoryBytes, data, 1);
+    return;
+  }
+  write_memory("grTexDownloadMipMapLevel", startAddress + offset, data, bytes);
+}
+
+}  // extern "C"

@@ -1,0 +1,30 @@
+// How Glide lays out a texture in TMU memory: level sizes from LOD and aspect, bytes per texel
+// by format, and where each level of a mip-map chain starts (largest level first).
+#pragma once
+
+#include <glide.h>
+
+#include <cstdint>
+
+namespace glide_shim {
+
+struct LevelSize {
+  int width, height;  // texels
+};
+
+bool is_lod(GrLOD_t lod);
+bool is_aspect(GrAspectRatio_t aspect);
+bool is_texture_format(GrTextureFormat_t format);   // any format Glide 2.x defines
+bool is_decodable_format(GrTextureFormat_t format);  // the ones this shim can sample
+bool is_even_odd(FxU32 even_odd);
+
+int bytes_per_texel(GrTextureFormat_t format);
+LevelSize level_size(GrLOD_t lod, GrAspectRatio_t aspect);
+// Bytes of the levels large_lod..small_lod that `even_odd` selects, rounded up to 8 bytes.
+FxU32 mipmap_bytes(GrLOD_t small_lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
+                   GrTextureFormat_t format, FxU32 even_odd);
+// Byte offset of `lod` from the start of a chain whose largest level is `large_lod`.
+FxU32 level_offset(GrLOD_t lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
+                   GrTextureFormat_t format, FxU32 even_odd);
+
+}  // namespace glide_shim
