@@ -173,6 +173,10 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   program.tex_scale = location("u_tex_scale");
   program.tex_max = location("u_tex_max");
   program.screen_height = location("u_screen_height");
+  program.color_unit = location("u_color_unit");
+  program.alpha_unit = location("u_alpha_unit");
+  program.tmu_rgb_unit = location("u_tmu_rgb_unit");
+  program.tmu_alpha_unit = location("u_tmu_alpha_unit");
   return &programs_.emplace(name, program).first->second;
 }
 
@@ -241,6 +245,17 @@ void GlRenderer::flush() {
   const Rgba8 key_color = unpack_color(context_.chroma.value, context_.display.color_format);
   gl.glUniform4f(program->chroma, key_color.r, key_color.g, key_color.b, 0.0f);
   gl.glUniform1f(program->alpha_ref, context_.blend.alpha_test_reference);
+  const ColorPathState &path = context_.color_path;
+  const TexCombineUnit &tmu = context_.tmu.combine;
+  const UnitUniforms units[4] = {
+      color_unit_uniforms(path.color), alpha_unit_uniforms(path.alpha),
+      tmu_unit_uniforms(tmu.rgb_function, tmu.rgb_factor, tmu.rgb_invert),
+      tmu_unit_uniforms(tmu.alpha_function, tmu.alpha_factor, tmu.alpha_invert)};
+  const int locations[4] = {program->color_unit, program->alpha_unit, program->tmu_rgb_unit,
+                            program->tmu_alpha_unit};
+  for (int i = 0; i < 4; ++i) {
+    if (locations[i] >= 0) gl.glUniform4fv(locations[i], 4, &units[i].v[0][0]);
+  }
   if (key.texture && context_.tmu.source.valid) {
     const BoundTexture bound = textures_.bind(gl, context_.tmu);
     gl.glUniform1i(program->texture, 0);

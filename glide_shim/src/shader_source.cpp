@@ -1,5 +1,6 @@
-// GLSL generation. The combine units are written out per state as straight-line expressions in
-// integer-valued floats (0..255), so the compiler folds away everything the state does not use.
+// GLSL 1.20 generation. The combine units are one fixed piece of arithmetic driven by 0/1
+// selector uniforms, in integer-valued floats (0..255) so (f+1)>>8 is exact; the generated parts
+// are the TMU fetch (filter, addressing), chroma key, alpha test and the 565 write.
 #include "shader_source.h"
 
 #include <sstream>
@@ -9,106 +10,61 @@ namespace {
 
 bool factor_reads_texture(GrCombineFactor_t factor) {
   const int source = static_cast<int>(factor) & 0x7;
-  return source == GR_COMBINE_FACTOR_TEXTURE_ALPHA || source == 0x5;  // 5: texture RGB
+  return source == GR_COMBINE_FACTOR_TEXTURE_ALPHA || source == GR_COMBINE_FACTOR_TEXTURE_RGB;
 }
 
-std::string one_minus(GrCombineFactor_t factor, const std::string &source) {
-  if ((static_cast<int>(factor) & 0x8) != 0) return "(255.0 - " + source + ")";
-  return source;
-}
-
-// The factor of the colour unit: a vec3 in 0..255.
-std::string color_factor(GrCombineFactor_t factor) {
-  switch (static_cast<int>(factor) & 0x7) {
-    case GR_COMBINE_FACTOR_LOCAL: return one_minus(factor, "c_local");
-    case GR_COMBINE_FACTOR_OTHER_ALPHA: return one_minus(factor, "vec3(a_other)");
-    case GR_COMBINE_FACTOR_LOCAL_ALPHA: return one_minus(factor, "vec3(a_local)");
-    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: return one_minus(factor, "vec3(tex.a)");
-    case 0x5: return one_minus(factor, "tex.rgb");
-    default: return one_minus(factor, "vec3(0.0)");
-  }
-}
-
-// The factor of the alpha unit: a float in 0..255.
-std::string alpha_factor(GrCombineFactor_t factor) {
-  switch (static_cast<int>(factor) & 0x7) {
-    case GR_COMBINE_FACTOR_LOCAL:
-    case GR_COMBINE_FACTOR_LOCAL_ALPHA: return one_minus(factor, "a_local");
-    case GR_COMBINE_FACTOR_OTHER_ALPHA: return one_minus(factor, "a_other");
-    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: return one_minus(factor, "tex.a");
-    default: return one_minus(factor, "0.0");
-  }
-}
-
-// The TMU's factor: local is this TMU's texel, other is the (absent) upstream TMU, so zero.
-// DETAIL (4) and LOD_FRACTION (5) are zero with a single LOD level.
-std::string tmu_factor(GrCombineFactor_t factor, bool rgb) {
-  switch (static_cast<int>(factor) & 0x7) {
-    case GR_COMBINE_FACTOR_LOCAL: return one_minus(factor, rgb ? "texel.rgb" : "texel.a");
-    case GR_COMBINE_FACTOR_LOCAL_ALPHA:
-      return one_minus(factor, rgb ? "vec3(texel.a)" : "texel.a");
-    default: return one_minus(factor, rgb ? "vec3(0.0)" : "0.0");
-  }
-}
-
-// One combine unit: out = clamp(((other or 0) - (local or 0)) * (f + 1) >> 8 + add), then the
-// optional invert. `zero` is the type's zero literal.
-std::string combine(const std::string &result, GrCombineFunction_t function,
-                    const std::string &factor, const std::string &local,
-                    const std::string &other, const std::string &local_alpha, bool invert,
-                    const std::string &type) {
-  const std::string zero = type + "(0.0)";
-  std::string minuend = other, subtrahend = zero, add = zero;
+// Row [0]: which terms of ((other or 0) - (local or 0)) * (f + 1) >> 8 + add the function uses.
+void set_function(UnitUniforms &u, GrCombineFunction_t function) {
+  float *f = u.v[0];
   switch (function) {
-    case GR_COMBINE_FUNCTION_ZERO: minuend = zero; break;
-    case GR_COMBINE_FUNCTION_LOCAL: minuend = zero; add = local; break;
-    case GR_COMBINE_FUNCTION_LOCAL_ALPHA: minuend = zero; add = type + "(" + local_alpha + ")"; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER: break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL: add = local; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL_ALPHA: add = type + "(" + local_alpha + ")"; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL: subtrahend = local; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL:
-      subtrahend = local;
-      add = local;
-      break;
+    case GR_COMBINE_FUNCTION_LOCAL: f[2] = 1; break;
+    case GR_COMBINE_FUNCTION_LOCAL_ALPHA: f[3] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER: f[0] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL: f[0] = 1, f[2] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL_ALPHA: f[0] = 1, f[3] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL: f[0] = 1, f[1] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL: f[0] = 1, f[1] = 1, f[2] = 1; break;
     case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL_ALPHA:
-      subtrahend = local;
-      add = type + "(" + local_alpha + ")";
+      f[0] = 1, f[1] = 1, f[3] = 1;
       break;
-    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL:
-      minuend = zero;
-      subtrahend = local;
-      add = local;
-      break;
-    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL_ALPHA:
-      minuend = zero;
-      subtrahend = local;
-      add = type + "(" + local_alpha + ")";
-      break;
-    default: minuend = zero; break;
+    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL: f[1] = 1, f[2] = 1; break;
+    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL_ALPHA: f[1] = 1, f[3] = 1; break;
+    default: break;  // ZERO
   }
-  std::ostringstream s;
-  s << "  " << type << " " << result << " = clamp(floor((" << minuend << " - " << subtrahend
-    << ") * (" << factor << " + 1.0) / 256.0) + " << add << ", 0.0, 255.0);\n";
-  if (invert) s << "  " << result << " = 255.0 - " << result << ";\n";
-  return s.str();
 }
 
-std::string color_local(GrCombineLocal_t local) {
-  return local == GR_COMBINE_LOCAL_CONSTANT ? "u_constant.rgb" : "it.rgb";
+// Rows [1] and [2].x-y: the factor's source and its one-minus bit. `texture_sources` is false in
+// the TMU, where 4 and 5 mean DETAIL and LOD_FRACTION, both zero with a single LOD.
+void set_factor(UnitUniforms &u, GrCombineFactor_t factor, bool texture_sources, bool rgb) {
+  switch (static_cast<int>(factor) & 0x7) {
+    case GR_COMBINE_FACTOR_LOCAL: u.v[1][0] = 1; break;
+    case GR_COMBINE_FACTOR_OTHER_ALPHA: u.v[1][1] = 1; break;
+    case GR_COMBINE_FACTOR_LOCAL_ALPHA: u.v[1][2] = 1; break;
+    case GR_COMBINE_FACTOR_TEXTURE_ALPHA:
+      if (texture_sources) u.v[1][3] = 1;
+      break;
+    case GR_COMBINE_FACTOR_TEXTURE_RGB:
+      if (texture_sources && rgb) u.v[2][0] = 1;
+      break;
+    default: break;  // ZERO
+  }
+  u.v[2][1] = (static_cast<int>(factor) & 0x8) != 0 ? 1.0f : 0.0f;
 }
-std::string color_other(GrCombineOther_t other) {
-  if (other == GR_COMBINE_OTHER_TEXTURE) return "tex.rgb";
-  if (other == GR_COMBINE_OTHER_CONSTANT) return "u_constant.rgb";
-  return "it.rgb";
+
+void set_other(UnitUniforms &u, GrCombineOther_t other) {
+  if (other == GR_COMBINE_OTHER_TEXTURE) u.v[3][1] = 1;
+  else if (other == GR_COMBINE_OTHER_CONSTANT) u.v[3][2] = 1;
+  else u.v[3][0] = 1;
 }
-std::string alpha_local(GrCombineLocal_t local) {
-  return local == GR_COMBINE_LOCAL_CONSTANT ? "u_constant.a" : "it.a";
-}
-std::string alpha_other(GrCombineOther_t other) {
-  if (other == GR_COMBINE_OTHER_TEXTURE) return "tex.a";
-  if (other == GR_COMBINE_OTHER_CONSTANT) return "u_constant.a";
-  return "it.a";
+
+UnitUniforms fbi_unit(const CombineUnit &unit, bool rgb) {
+  UnitUniforms u;
+  set_function(u, unit.function);
+  set_factor(u, unit.factor, true, rgb);
+  u.v[2][2] = unit.local == GR_COMBINE_LOCAL_CONSTANT ? 1.0f : 0.0f;
+  u.v[2][3] = unit.invert ? 1.0f : 0.0f;
+  set_other(u, unit.other);
+  return u;
 }
 
 const char *glsl_compare(GrCmpFnc_t function) {
@@ -127,6 +83,7 @@ const char *kFragmentPrelude = R"(
 uniform vec4 u_constant;    // constant colour, RGBA 0..255
 uniform vec4 u_chroma;      // chroma-key colour, RGB 0..255 (a unused)
 uniform float u_alpha_ref;  // alpha-test reference, 0..255
+uniform vec4 u_color_unit[4], u_alpha_unit[4], u_tmu_rgb_unit[4], u_tmu_alpha_unit[4];
 uniform sampler2D u_texture;
 uniform vec2 u_tex_size;    // largest level in texels
 uniform float u_tex_scale;  // texels per Glide s,t unit: the longer side / 256
@@ -135,8 +92,8 @@ uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
 
-// A stored texel widened to 8 bits by bit replication, as the TMU does: the first eight bits
-// of the channel's bits repeated, floor(n * 256 / max) clamped to 255.
+// A stored texel widened to 8 bits by bit replication, as the TMU does: the channel's bits
+// repeated and the first eight kept, which is floor(n * 256 / max) clamped to 255.
 vec4 widen(vec4 stored) {
   vec4 n = floor(stored * u_tex_max + 0.5);
   return min(floor(n * 256.0 / u_tex_max), vec4(255.0));
@@ -146,9 +103,40 @@ vec4 fetch(float i, float j) {  // texel indices, already clamped or wrapped
 }
 float clamp_index(float i, float size) { return clamp(i, 0.0, size - 1.0); }
 float wrap_index(float i, float size) { return mod(i, size); }
+
+// One combine unit: clamp(((other or 0) - (local or 0)) * (f + 1) >> 8 + add), then invert.
+// The selectors k[] are 0 or 1, so every product and sum stays an exact integer.
+vec3 combine_rgb(vec4 k0, vec4 k1, vec4 k2, vec3 local, vec3 other, float a_local,
+                 float a_other, vec4 tex) {
+  vec3 f = k1.x * local + vec3(k1.y * a_other + k1.z * a_local + k1.w * tex.a) + k2.x * tex.rgb;
+  f = mix(f, 255.0 - f, k2.y);
+  vec3 sum = floor((k0.x * other - k0.y * local) * (f + 1.0) / 256.0) + k0.z * local +
+             vec3(k0.w * a_local);
+  vec3 result = clamp(sum, 0.0, 255.0);
+  return mix(result, 255.0 - result, k2.w);
+}
+float combine_alpha(vec4 k0, vec4 k1, vec4 k2, float local, float other, float tex_a) {
+  float f = k1.x * local + k1.y * other + k1.z * local + k1.w * tex_a;
+  f = mix(f, 255.0 - f, k2.y);
+  float sum = floor((k0.x * other - k0.y * local) * (f + 1.0) / 256.0) + (k0.z + k0.w) * local;
+  float result = clamp(sum, 0.0, 255.0);
+  return mix(result, 255.0 - result, k2.w);
+}
 )";
 
 }  // namespace
+
+UnitUniforms color_unit_uniforms(const CombineUnit &unit) { return fbi_unit(unit, true); }
+UnitUniforms alpha_unit_uniforms(const CombineUnit &unit) { return fbi_unit(unit, false); }
+
+UnitUniforms tmu_unit_uniforms(GrCombineFunction_t function, GrCombineFactor_t factor,
+                               bool invert) {
+  UnitUniforms u;
+  set_function(u, function);
+  set_factor(u, factor, false, true);
+  u.v[2][3] = invert ? 1.0f : 0.0f;
+  return u;
+}
 
 bool reads_texture(const ColorPathState &path) {
   return path.color.other == GR_COMBINE_OTHER_TEXTURE ||
@@ -158,11 +146,8 @@ bool reads_texture(const ColorPathState &path) {
 
 PipelineKey pipeline_key(const GlideContext &context) {
   PipelineKey key;
-  key.color = context.color_path.color;
-  key.alpha = context.color_path.alpha;
   key.texture = reads_texture(context.color_path);
   if (key.texture) {
-    key.tex = context.tmu.combine;
     // With a single LOD the magnification filter decides (voodoo_pipeline.md, texture fetch).
     key.bilinear = context.tmu.mag_filter == GR_TEXTUREFILTER_BILINEAR;
     key.wrap_s = context.tmu.clamp_s == GR_TEXTURECLAMP_WRAP;
@@ -177,16 +162,9 @@ PipelineKey pipeline_key(const GlideContext &context) {
 
 std::string PipelineKey::defines() const {
   std::ostringstream s;
-  auto unit = [&s](const char *name, const CombineUnit &u) {
-    s << name << ':' << u.function << ',' << u.factor << ',' << u.local << ',' << u.other << ','
-      << u.invert << ';';
-  };
-  unit("cc", color);
-  unit("ac", alpha);
-  s << "tc:" << tex.rgb_function << ',' << tex.rgb_factor << ',' << tex.alpha_function << ','
-    << tex.alpha_factor << ',' << tex.rgb_invert << ',' << tex.alpha_invert << ';' << "t:"
-    << texture << bilinear << wrap_s << wrap_t << ";ck:" << chroma_key << ";at:" << alpha_test
-    << ";bl:" << blending << ";di:" << dither;
+  s << "texture " << texture << " bilinear " << bilinear << " wrap " << wrap_s << wrap_t
+    << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
+    << " dither " << dither;
   return s.str();
 }
 
@@ -243,25 +221,26 @@ std::string fragment_shader_source(const PipelineKey &key) {
        "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
   if (key.texture) {
     s << "  vec4 texel = sample_tmu();\n"
-      << combine("tmu_rgb", key.tex.rgb_function, tmu_factor(key.tex.rgb_factor, true),
-                 "texel.rgb", "vec3(0.0)", "texel.a", key.tex.rgb_invert, "vec3")
-      << combine("tmu_a", key.tex.alpha_function, tmu_factor(key.tex.alpha_factor, false),
-                 "texel.a", "0.0", "texel.a", key.tex.alpha_invert, "float")
-      << "  vec4 tex = vec4(tmu_rgb, tmu_a);\n";
+         "  vec4 tex = vec4(combine_rgb(u_tmu_rgb_unit[0], u_tmu_rgb_unit[1], u_tmu_rgb_unit[2],"
+         " texel.rgb, vec3(0.0), texel.a, 0.0, vec4(0.0)),\n"
+         "                  combine_alpha(u_tmu_alpha_unit[0], u_tmu_alpha_unit[1],"
+         " u_tmu_alpha_unit[2], texel.a, 0.0, 0.0));\n";
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
   }
-  s << "  vec3 c_local = " << color_local(key.color.local) << ";\n"
-    << "  vec3 c_other = " << color_other(key.color.other) << ";\n"
-    << "  float a_local = " << alpha_local(key.alpha.local) << ";\n"
-    << "  float a_other = " << alpha_other(key.alpha.other) << ";\n";
+  s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_unit[2].z);\n"
+       "  vec3 c_other = u_color_unit[3].x * it.rgb + u_color_unit[3].y * tex.rgb +"
+       " u_color_unit[3].z * u_constant.rgb;\n"
+       "  float a_local = mix(it.a, u_constant.a, u_alpha_unit[2].z);\n"
+       "  float a_other = u_alpha_unit[3].x * it.a + u_alpha_unit[3].y * tex.a +"
+       " u_alpha_unit[3].z * u_constant.a;\n";
   if (key.chroma_key) {
-    s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on the 'other' colour\n";
+    s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on 'other'\n";
   }
-  s << combine("rgb", key.color.function, color_factor(key.color.factor), "c_local", "c_other",
-               "a_local", key.color.invert, "vec3")
-    << combine("alpha", key.alpha.function, alpha_factor(key.alpha.factor), "a_local", "a_other",
-               "a_local", key.alpha.invert, "float");
+  s << "  vec3 rgb = combine_rgb(u_color_unit[0], u_color_unit[1], u_color_unit[2], c_local,"
+       " c_other, a_local, a_other, tex);\n"
+       "  float alpha = combine_alpha(u_alpha_unit[0], u_alpha_unit[1], u_alpha_unit[2],"
+       " a_local, a_other, tex.a);\n";
 
   if (key.alpha_test == GR_CMP_NEVER) {
     s << "  discard;\n";
@@ -290,13 +269,8 @@ std::string fragment_shader_source(const PipelineKey &key) {
              "  float d = cell.x < 1.0 ? row.x : cell.x < 2.0 ? row.y : cell.x < 3.0 ? row.z :"
              " row.w;\n";
       }
-      s << "  vec3 v = rgb;\n"
-           "  vec3 q = vec3(floor((v.r * 2.0 - floor(v.r / 16.0) + floor(v.r / 128.0) + d) /"
-           " 16.0),\n"
-           "                floor((v.g * 4.0 - floor(v.g / 16.0) + floor(v.g / 64.0) + d) /"
-           " 16.0),\n"
-           "                floor((v.b * 2.0 - floor(v.b / 16.0) + floor(v.b / 128.0) + d) /"
-           " 16.0));\n";
+      s << "  vec3 q = floor((rgb * vec3(2.0, 4.0, 2.0) - floor(rgb / 16.0) +"
+           " floor(rgb / vec3(128.0, 64.0, 128.0)) + d) / 16.0);\n";
     }
     s << "  gl_FragColor = vec4(q / vec3(31.0, 63.0, 31.0), alpha / 255.0);  // exact 565\n";
   }

@@ -1,0 +1,36 @@
+// Test fixture: a small headless Glide window opened per test (grGlideInit .. grGlideShutdown),
+// and helpers to draw screen-aligned rectangles and read the colour buffer back.
+#pragma once
+
+#include <glide.h>
+#include <glide_shim.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+class GlideWindowTest : public ::testing::Test {
+ protected:
+  static constexpr int kWidth = 64;
+  static constexpr int kHeight = 64;
+
+  void SetUp() override;
+  void TearDown() override;
+
+  // The whole colour buffer as 565 words, rows from the top.
+  std::vector<FxU16> read_buffer(GrBuffer_t buffer = GR_BUFFER_BACKBUFFER);
+  FxU16 pixel(int x, int y, GrBuffer_t buffer = GR_BUFFER_BACKBUFFER);
+
+  // Two triangles covering pixels [x0,x1) x [y0,y1); the vertex template supplies colour, depth
+  // and texture fields.
+  static void draw_rect(float x0, float y0, float x1, float y1, const GrVertex &style);
+  static GrVertex vertex();  // all fields zero but oow = 1
+
+  // Expects no error reported since the last glideShimClearError.
+  static void expect_no_error();
+};
+
+// Channel helpers for 565 words.
+inline int red5(FxU16 p) { return p >> 11; }
+inline int green6(FxU16 p) { return (p >> 5) & 0x3F; }
+inline int blue5(FxU16 p) { return p & 0x1F; }
