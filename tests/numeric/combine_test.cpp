@@ -6,6 +6,7 @@
 #include "glide_window.h"
 #include "voodoo_reference.h"
 
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -105,6 +106,34 @@ class CombineTest : public GlideWindowTest {
     return in;
   }
 
+  // Makes the alpha of every later draw visible in the colour buffer: blending ZERO/SRC_ALPHA
+  // over white leaves alpha/255 in each channel.
+  static void show_alpha_as_colour() {
+    grAlphaBlendFunction(GR_BLEND_ZERO, GR_BLEND_SRC_ALPHA, GR_BLEND_ZERO, GR_BLEND_ZERO);
+    grBufferClear(0xFFFFFFFFu, 0, 0);
+  }
+
+  // Compares one channel (or all three) of the frame with `want` per pixel; returns mismatches.
+  int compare(const std::string &what, const std::vector<FxU16> &frame,
+              const std::function<voodoo_ref::Rgba(int, int)> &want, bool rgb) {
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        const voodoo_ref::Rgba w = want(x, y);
+        const FxU16 got = frame[static_cast<std::size_t>(y * kWidth + x)];
+        const bool ok = rgb ? within_one_level(red5(got), w.r, 5) &&
+                                  within_one_level(green6(got), w.g, 6) &&
+                                  within_one_level(blue5(got), w.b, 5)
+                            : within_one_level(green6(got), w.a, 6);
+        if (!ok) {
+          ADD_FAILURE() << what << " at (" << x << "," << y << "): want " << w << ", got 565 ("
+                        << red5(got) << "," << green6(got) << "," << blue5(got) << ")";
+          return 1;
+        }
+      }
+    }
+    return 0;
+  }
+
   std::vector<FxU16> texels_;
   std::vector<voodoo_ref::Rgba> iterated_;
 };
@@ -154,6 +183,139 @@ TEST_F(CombineTest, ColorCombineMatchesReferenceForEveryConfiguration) {
           }
   expect_no_error();
   EXPECT_EQ(configurations, 11 * 10 * 2 * 3 * 2);
+}
+
+TEST_F(CombineTest, AlphaCombineMatchesReferenceForEveryConfiguration) {
+  show_alpha_as_colour();
+  const voodoo_ref::CombineConfig color{GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_ZERO,
+                                        GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_ITERATED, false};
+  grColorCombine(color.function, color.factor, color.local, color.other, FXFALSE);
+  std::mt19937 random(11);
+  std::uniform_int_distribution<unsigned> word;
+  int configurations = 0, mismatches = 0;
+  for (int function : kFunctions)
+    for (int factor : kFactors)
+      for (int local : kLocals)
+        for (int other : kOthers)
+          for (bool invert : {false, true}) {
+            const voodoo_ref::CombineConfig alpha{function, factor, local, other, invert};
+            const GrColor_t argb = word(random);
+            const voodoo_ref::Rgba constant{static_cast<int>(argb >> 16 & 0xFF),
+                                            static_cast<int>(argb >> 8 & 0xFF),
+                                            static_cast<int>(argb & 0xFF),
+                                            static_cast<int>(argb >> 24)};
+            grConstantColorValue(argb);
+            grAlphaCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
+            grBufferClear(0xFFFFFFFFu, 0, 0);
+            draw_pixels();
+            ++configurations;
+            mismatches += compare(describe("grAlphaCombine", alpha), read_buffer(),
+                                  [&](int x, int y) {
+                                    return voodoo_ref::combine_fbi(color, alpha,
+                                                                   inputs(x, y, constant));
+                                  },
+                                  false);
+            if (mismatches > 5) return;
+          }
+  expect_no_error();
+  EXPECT_EQ(configurations, 11 * 10 * 2 * 3 * 2);
+}
+
+TEST_F(CombineTest, TextureCombineMatchesReferenceForEveryConfiguration) {
+  // ARGB_8332 texels: distinct R, G, B and a full 8-bit alpha.
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> texel(0, 0xFFFF);
+  std::vector<FxU16> texels(kWidth * kHeight);
+  for (FxU16 &t : texels) t = static_cast<FxU16>(texel(random));
+  GrTexInfo info{GR_LOD_64, GR_LOD_64, GR_ASPECT_1x1, GR_TEXFMT_ARGB_8332, texels.data()};
+  grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  grTexSource(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  // The colour unit passes the TMU's RGB through; its alpha is shown by blending.
+  guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+  guAlphaSource(GR_ALPHASOURCE_TEXTURE_ALPHA);
+  const int tmu_factors[] = {GR_COMBINE_FACTOR_ZERO, GR_COMBINE_FACTOR_LOCAL,
+                             GR_COMBINE_FACTOR_OTHER_ALPHA, GR_COMBINE_FACTOR_LOCAL_ALPHA,
+                             GR_COMBINE_FACTOR_DETAIL_FACTOR, GR_COMBINE_FACTOR_LOD_FRACTION,
+                             GR_COMBINE_FACTOR_ONE, GR_COMBINE_FACTOR_ONE_MINUS_LOCAL,
+                             GR_COMBINE_FACTOR_ONE_MINUS_OTHER_ALPHA,
+                             GR_COMBINE_FACTOR_ONE_MINUS_LOCAL_ALPHA,
+                             GR_COMBINE_FACTOR_ONE_MINUS_DETAIL_FACTOR,
+                             GR_COMBINE_FACTOR_ONE_MINUS_LOD_FRACTION};
+  auto texel_at = [&](int x, int y) {
+    return voodoo_ref::decode_texel(GR_TEXFMT_ARGB_8332,
+                                    texels[static_cast<std::size_t>(y * kWidth + x)]);
+  };
+  int mismatches = 0;
+  for (int function : kFunctions)
+    for (int factor : tmu_factors)
+      for (bool invert : {false, true}) {
+        const voodoo_ref::TexCombineConfig tmu{function, factor, function, factor, invert, invert};
+        grTexCombine(GR_TMU0, function, factor, function, factor, invert, invert);
+        grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+        draw_pixels();
+        const std::string what = "grTexCombine(function " + std::to_string(function) +
+                                 ", factor " + std::to_string(factor) + ", invert " +
+                                 std::to_string(invert) + ")";
+        auto want = [&](int x, int y) {
+          return voodoo_ref::combine_tmu(tmu, texel_at(x, y), voodoo_ref::kNoUpstreamTmu);
+        };
+        mismatches += compare(what + " rgb", read_buffer(), want, true);
+        show_alpha_as_colour();
+        draw_pixels();
+        mismatches += compare(what + " alpha", read_buffer(), want, false);
+        if (mismatches > 5) return;
+      }
+  expect_no_error();
+}
+
+TEST_F(CombineTest, ChromaKeyDiscardsExactlyTheMatchingOtherColour) {
+  // Other = iterated colour; key one pixel's colour and a colour no pixel has.
+  grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE, GR_COMBINE_LOCAL_NONE,
+                 GR_COMBINE_OTHER_ITERATED, FXFALSE);
+  const voodoo_ref::Rgba keyed = iterated_[100];
+  grChromakeyValue(static_cast<GrColor_t>(keyed.r << 16 | keyed.g << 8 | keyed.b));
+  grChromakeyMode(GR_CHROMAKEY_ENABLE);
+  grBufferClear(0x00000000u, 0, 0);
+  draw_pixels();
+  const std::vector<FxU16> frame = read_buffer();
+  int discarded = 0;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    const voodoo_ref::Rgba &c = iterated_[static_cast<std::size_t>(i)];
+    const bool expect_discard = voodoo_ref::chroma_key_discards(c, keyed);
+    const FxU16 drawn = voodoo_ref::pack_rgb565(c);
+    if (expect_discard) {
+      ++discarded;
+      EXPECT_EQ(frame[static_cast<std::size_t>(i)], 0) << "pixel " << i << " matched the key";
+    } else {
+      EXPECT_EQ(frame[static_cast<std::size_t>(i)], drawn) << "pixel " << i;
+    }
+  }
+  EXPECT_GE(discarded, 1);
+  expect_no_error();
+}
+
+TEST_F(CombineTest, AlphaTestPassesExactlyWhereTheReferenceDoes) {
+  // Colour = white, alpha = iterated; each function against reference 128 and the extremes.
+  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  guAlphaSource(GR_ALPHASOURCE_ITERATED_ALPHA);
+  for (int function = GR_CMP_NEVER; function <= GR_CMP_ALWAYS; ++function) {
+    for (int reference : {0, 128, 255}) {
+      grAlphaTestFunction(function);
+      grAlphaTestReferenceValue(static_cast<GrAlpha_t>(reference));
+      grBufferClear(0x00000000u, 0, 0);
+      draw_pixels();
+      const std::vector<FxU16> frame = read_buffer();
+      int wrong = 0;
+      for (int i = 0; i < kWidth * kHeight; ++i) {
+        const bool pass =
+            voodoo_ref::alpha_test_passes(function, iterated_[static_cast<std::size_t>(i)].a, reference);
+        wrong += (frame[static_cast<std::size_t>(i)] == 0xFFFF) != pass;
+      }
+      EXPECT_EQ(wrong, 0) << "alpha test function " << function << " reference " << reference;
+    }
+  }
+  expect_no_error();
 }
 
 }  // namespace
