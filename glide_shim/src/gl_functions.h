@@ -29,7 +29,8 @@ namespace glide_shim {
   X(glUniform4f) X(glUniform4fv) X(glVertexAttribPointer) X(glEnableVertexAttribArray) \
   X(glDisableVertexAttribArray) X(glDrawArrays) X(glPushAttrib) X(glPopAttrib) \
   X(glPushClientAttrib) X(glPopClientAttrib) X(glMatrixMode) X(glPushMatrix) X(glPopMatrix) \
-  X(glLoadIdentity) X(glStencilMask) X(glDepthRange) X(glGenBuffers) X(glDeleteBuffers) \
+  X(glLoadIdentity) X(glOrtho) X(glTexEnvi) X(glEnableClientState) \
+  X(glDisableClientState) X(glVertexPointer) X(glColorPointer) X(glTexCoordPointer) X(glStencilMask) X(glDepthRange) X(glGenBuffers) X(glDeleteBuffers) \
   X(glBindBuffer) X(glBufferData) X(glGenQueries) X(glDeleteQueries) X(glBeginQuery) \
   X(glEndQuery) X(glGetQueryObjectuiv)
 

@@ -1,0 +1,81 @@
+// Frames rendered through the shim against reference_images/. Tolerances: llvmpipe's output
+// depends on the CPU's vector ISA (osmesa_notes.md: up to ~2.5k pixels by <= 3 levels between
+// SSE4.1 and AVX2), so a pixel may differ by 4/255 and 1% of pixels may differ more.
+#include "glide_window.h"
+#include "image_compare.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+
+const ImageTolerance kAcrossCpus{4.0f / 255.0f, 0.01};
+
+TEST(SampleProgram, HelloGlideWritesTheExpectedFrame) {
+  // The plain-C sample program, run as a user would; it must write its PNG and say so.
+  const std::string png = output_path("hello_glide.png");
+  std::remove(png.c_str());
+  const std::string command = std::string(HELLO_GLIDE_PATH) + " " + png + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  EXPECT_TRUE(matches_reference("hello_glide", png, kAcrossCpus));
+}
+
+class ShimImageTest : public GlideWindowTest {
+ protected:
+  std::string write_front(const std::string &name) {
+    grBufferSwap(1);
+    const std::string png = output_path(name + ".png");
+    EXPECT_TRUE(glideShimWritePng(GR_BUFFER_FRONTBUFFER, png.c_str())) << glideShimGetLastErrorMessage();
+    return png;
+  }
+};
+
+TEST_F(ShimImageTest, GouraudWithFourByFourDitherAndGamma) {
+  // The hardware defaults: 4x4 dither on, gamma 1.7 at scan-out.
+  GrVertex a = vertex(), b = vertex(), c = vertex();
+  a.x = 2, a.y = 2, a.r = 255;
+  b.x = 62, b.y = 10, b.g = 255;
+  c.x = 20, c.y = 62, c.b = 255, c.r = 60;
+  grBufferClear(0x00202020u, 0, 0);
+  grDrawTriangle(&a, &b, &c);
+  EXPECT_TRUE(matches_reference("gouraud_dither_gamma", write_front("gouraud_dither_gamma"), kAcrossCpus));
+}
+
+TEST_F(ShimImageTest, ShadowPassOverAReceiver) {
+  // A miniature of the article's step 5: a flat 4444 mask (alpha F inside a disc), projected
+  // with bilinear filtering, blended at iterated alpha 170 over a Gouraud floor.
+  grDitherMode(GR_DITHER_DISABLE);
+  grGammaCorrectionValue(0.8f);
+  std::vector<FxU16> mask(32 * 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x)
+      mask[static_cast<std::size_t>(y * 32 + x)] =
+          (x - 16) * (x - 16) + (y - 16) * (y - 14) < 100 ? 0xF000 : 0x0000;
+  GrVertex floor_style = vertex();
+  floor_style.r = 200, floor_style.g = 180, floor_style.b = 120;
+  draw_rect(0, 0, kWidth, kHeight, floor_style);
+
+  GrTexInfo info{GR_LOD_32, GR_LOD_32, GR_ASPECT_1x1, GR_TEXFMT_ARGB_4444, mask.data()};
+  grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  grTexSource(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  grTexFilterMode(GR_TMU0, GR_TEXTUREFILTER_BILINEAR, GR_TEXTUREFILTER_BILINEAR);
+  grTexClampMode(GR_TMU0, GR_TEXTURECLAMP_CLAMP, GR_TEXTURECLAMP_CLAMP);
+  guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
+  guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+  guAlphaSource(GR_ALPHASOURCE_TEXTURE_ALPHA_TIMES_ITERATED_ALPHA);
+  grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE, GR_BLEND_ZERO);
+  GrVertex shadow = vertex();
+  shadow.a = 170;
+  GrVertex v[4] = {shadow, shadow, shadow, shadow};
+  const float xs[4] = {4, 60, 60, 4}, ys[4] = {8, 8, 56, 56}, s[4] = {0, 256, 256, 0},
+              t[4] = {0, 0, 256, 256};
+  for (int k = 0; k < 4; ++k) {
+    v[k].x = xs[k], v[k].y = ys[k], v[k].tmuvtx[0].sow = s[k], v[k].tmuvtx[0].tow = t[k];
+  }
+  grDrawTriangle(&v[0], &v[1], &v[2]);
+  grDrawTriangle(&v[0], &v[2], &v[3]);
+  EXPECT_TRUE(matches_reference("shadow_pass", write_front("shadow_pass"), kAcrossCpus));
+  expect_no_error();
+}
+
+}  // namespace
