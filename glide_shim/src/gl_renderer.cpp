@@ -171,12 +171,12 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   program.texture = location("u_texture");
   program.tex_size = location("u_tex_size");
   program.tex_scale = location("u_tex_scale");
-  program.tex_max = location("u_tex_max");
   program.screen_height = location("u_screen_height");
-  program.color_unit = location("u_color_unit");
-  program.alpha_unit = location("u_alpha_unit");
-  program.tmu_rgb_unit = location("u_tmu_rgb_unit");
-  program.tmu_alpha_unit = location("u_tmu_alpha_unit");
+  program.color_select = location("u_color_select");
+  program.color_other = location("u_color_other");
+  program.alpha_select = location("u_alpha_select");
+  program.alpha_other = location("u_alpha_other");
+  program.tmu_invert = location("u_tmu_invert");
   return &programs_.emplace(name, program).first->second;
 }
 
@@ -245,30 +245,24 @@ void GlRenderer::flush() {
   const Rgba8 key_color = unpack_color(context_.chroma.value, context_.display.color_format);
   gl.glUniform4f(program->chroma, key_color.r, key_color.g, key_color.b, 0.0f);
   gl.glUniform1f(program->alpha_ref, context_.blend.alpha_test_reference);
-  const ColorPathState &path = context_.color_path;
+  const UnitUniforms color = unit_uniforms(context_.color_path.color);
+  const UnitUniforms alpha = unit_uniforms(context_.color_path.alpha);
+  gl.glUniform4fv(program->color_select, 1, color.select);
+  gl.glUniform4fv(program->color_other, 1, color.other);
+  gl.glUniform4fv(program->alpha_select, 1, alpha.select);
+  gl.glUniform4fv(program->alpha_other, 1, alpha.other);
   const TexCombineUnit &tmu = context_.tmu.combine;
-  const UnitUniforms units[4] = {
-      color_unit_uniforms(path.color), alpha_unit_uniforms(path.alpha),
-      tmu_unit_uniforms(tmu.rgb_function, tmu.rgb_factor, tmu.rgb_invert),
-      tmu_unit_uniforms(tmu.alpha_function, tmu.alpha_factor, tmu.alpha_invert)};
-  const int locations[4] = {program->color_unit, program->alpha_unit, program->tmu_rgb_unit,
-                            program->tmu_alpha_unit};
-  for (int i = 0; i < 4; ++i) {
-    if (locations[i] >= 0) gl.glUniform4fv(locations[i], 4, &units[i].v[0][0]);
-  }
+  gl.glUniform2f(program->tmu_invert, tmu.rgb_invert ? 1.0f : 0.0f, tmu.alpha_invert ? 1.0f : 0.0f);
   if (key.texture && context_.tmu.source.valid) {
     const BoundTexture bound = textures_.bind(gl, context_.tmu);
     gl.glUniform1i(program->texture, 0);
     gl.glUniform2f(program->tex_size, bound.width, bound.height);
     gl.glUniform1f(program->tex_scale, bound.scale);
-    gl.glUniform4f(program->tex_max, bound.channel_max[0], bound.channel_max[1],
-                   bound.channel_max[2], bound.channel_max[3]);
   } else if (key.texture) {
     // No grTexSource yet: a texture of size 1 reading texel zero of an unbound unit (0,0,0,0).
     gl.glBindTexture(GL_TEXTURE_2D, 0);
     gl.glUniform2f(program->tex_size, 1.0f, 1.0f);
     gl.glUniform1f(program->tex_scale, 1.0f);
-    gl.glUniform4f(program->tex_max, 255.0f, 255.0f, 255.0f, 255.0f);
   }
 
   const GLsizei stride = sizeof(ShimVertex);

@@ -1,6 +1,6 @@
-// GLSL 1.20 generation. The combine units are one fixed piece of arithmetic driven by 0/1
-// selector uniforms, in integer-valued floats (0..255) so (f+1)>>8 is exact; the generated parts
-// are the TMU fetch (filter, addressing), chroma key, alpha test and the 565 write.
+// GLSL 1.20 generation. Each combine unit is written out as straight-line arithmetic for its
+// function and factor, in integer-valued floats (0..255) so (f+1)>>8 is exact; its sources and
+// invert flag are 0/1 uniforms. Also generated: the TMU fetch, chroma key, alpha test, 565 write.
 #include "shader_source.h"
 
 #include <sstream>
@@ -13,58 +13,75 @@ bool factor_reads_texture(GrCombineFactor_t factor) {
   return source == GR_COMBINE_FACTOR_TEXTURE_ALPHA || source == GR_COMBINE_FACTOR_TEXTURE_RGB;
 }
 
-// Row [0]: which terms of ((other or 0) - (local or 0)) * (f + 1) >> 8 + add the function uses.
-void set_function(UnitUniforms &u, GrCombineFunction_t function) {
-  float *f = u.v[0];
-  switch (function) {
-    case GR_COMBINE_FUNCTION_LOCAL: f[2] = 1; break;
-    case GR_COMBINE_FUNCTION_LOCAL_ALPHA: f[3] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER: f[0] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL: f[0] = 1, f[2] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL_ALPHA: f[0] = 1, f[3] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL: f[0] = 1, f[1] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL: f[0] = 1, f[1] = 1, f[2] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL_ALPHA:
-      f[0] = 1, f[1] = 1, f[3] = 1;
-      break;
-    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL: f[1] = 1, f[2] = 1; break;
-    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL_ALPHA: f[1] = 1, f[3] = 1; break;
-    default: break;  // ZERO
-  }
+bool has_product(GrCombineFunction_t function) {
+  return function != GR_COMBINE_FUNCTION_ZERO && function != GR_COMBINE_FUNCTION_LOCAL &&
+         function != GR_COMBINE_FUNCTION_LOCAL_ALPHA;
 }
 
-// Rows [1] and [2].x-y: the factor's source and its one-minus bit. `texture_sources` is false in
-// the TMU, where 4 and 5 mean DETAIL and LOD_FRACTION, both zero with a single LOD.
-void set_factor(UnitUniforms &u, GrCombineFactor_t factor, bool texture_sources, bool rgb) {
+UnitShape shape(GrCombineFunction_t function, GrCombineFactor_t factor) {
+  return {function, has_product(function) ? factor : GR_COMBINE_FACTOR_ZERO};
+}
+
+std::string one_minus(GrCombineFactor_t factor, const std::string &source) {
+  if ((static_cast<int>(factor) & 0x8) != 0) return "(255.0 - " + source + ")";
+  return source;
+}
+
+// The factor's source, 0..255. In the TMU (`fbi` false) local is the texel, other the absent
+// upstream TMU, and 4/5 mean DETAIL and LOD_FRACTION, both zero with a single LOD level.
+std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std::string &local,
+                        const std::string &local_alpha, const std::string &other_alpha) {
+  const std::string zero = rgb ? "vec3(0.0)" : "0.0";
+  auto widen = [rgb](const std::string &scalar) { return rgb ? "vec3(" + scalar + ")" : scalar; };
   switch (static_cast<int>(factor) & 0x7) {
-    case GR_COMBINE_FACTOR_LOCAL: u.v[1][0] = 1; break;
-    case GR_COMBINE_FACTOR_OTHER_ALPHA: u.v[1][1] = 1; break;
-    case GR_COMBINE_FACTOR_LOCAL_ALPHA: u.v[1][2] = 1; break;
-    case GR_COMBINE_FACTOR_TEXTURE_ALPHA:
-      if (texture_sources) u.v[1][3] = 1;
-      break;
+    case GR_COMBINE_FACTOR_LOCAL: return one_minus(factor, local);
+    case GR_COMBINE_FACTOR_OTHER_ALPHA: return one_minus(factor, widen(other_alpha));
+    case GR_COMBINE_FACTOR_LOCAL_ALPHA: return one_minus(factor, widen(local_alpha));
+    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: return one_minus(factor, fbi ? widen("tex.a") : zero);
     case GR_COMBINE_FACTOR_TEXTURE_RGB:
-      if (texture_sources && rgb) u.v[2][0] = 1;
-      break;
-    default: break;  // ZERO
+      return one_minus(factor, fbi && rgb ? "tex.rgb" : zero);
+    default: return one_minus(factor, zero);
   }
-  u.v[2][1] = (static_cast<int>(factor) & 0x8) != 0 ? 1.0f : 0.0f;
 }
 
-void set_other(UnitUniforms &u, GrCombineOther_t other) {
-  if (other == GR_COMBINE_OTHER_TEXTURE) u.v[3][1] = 1;
-  else if (other == GR_COMBINE_OTHER_CONSTANT) u.v[3][2] = 1;
-  else u.v[3][0] = 1;
-}
-
-UnitUniforms fbi_unit(const CombineUnit &unit, bool rgb) {
-  UnitUniforms u;
-  set_function(u, unit.function);
-  set_factor(u, unit.factor, true, rgb);
-  u.v[2][2] = unit.local == GR_COMBINE_LOCAL_CONSTANT ? 1.0f : 0.0f;
-  u.v[2][3] = unit.invert ? 1.0f : 0.0f;
-  set_other(u, unit.other);
-  return u;
+// One combine unit, straight-line: clamp(((other or 0) - (local or 0)) * (f + 1) >> 8 + add),
+// then inverted when the `invert` uniform expression is 1.
+std::string combine_code(const std::string &result, const UnitShape &unit, bool rgb, bool fbi,
+                         const std::string &local, const std::string &other,
+                         const std::string &local_alpha, const std::string &other_alpha,
+                         const std::string &invert) {
+  const std::string type = rgb ? "vec3" : "float";
+  const std::string zero = type + "(0.0)";
+  const std::string widened_local_alpha = rgb ? "vec3(" + local_alpha + ")" : local_alpha;
+  std::string minuend = other, subtrahend = zero, add = zero;
+  switch (unit.function) {
+    case GR_COMBINE_FUNCTION_ZERO: minuend = zero; break;
+    case GR_COMBINE_FUNCTION_LOCAL: minuend = zero, add = local; break;
+    case GR_COMBINE_FUNCTION_LOCAL_ALPHA: minuend = zero, add = widened_local_alpha; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER: break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL: add = local; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL_ALPHA: add = widened_local_alpha; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL: subtrahend = local; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL: subtrahend = add = local; break;
+    case GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL_ADD_LOCAL_ALPHA:
+      subtrahend = local, add = widened_local_alpha;
+      break;
+    case GR_COMBINE_FUNCTION_SCALE_MINUS_LOCAL_ADD_LOCAL: minuend = zero, subtrahend = add = local; break;
+    default:  // SCALE_MINUS_LOCAL_ADD_LOCAL_ALPHA
+      minuend = zero, subtrahend = local, add = widened_local_alpha;
+      break;
+  }
+  std::ostringstream s;
+  s << "  " << type << " " << result << " = ";
+  if (has_product(unit.function)) {
+    s << "clamp(floor((" << minuend << " - " << subtrahend << ") * ("
+      << factor_code(unit.factor, rgb, fbi, local, local_alpha, other_alpha)
+      << " + 1.0) / 256.0) + " << add << ", 0.0, 255.0);\n";
+  } else {
+    s << add << ";\n";
+  }
+  s << "  " << result << " = mix(" << result << ", 255.0 - " << result << ", " << invert << ");\n";
+  return s.str();
 }
 
 const char *glsl_compare(GrCmpFnc_t function) {
@@ -83,58 +100,35 @@ const char *kFragmentPrelude = R"(
 uniform vec4 u_constant;    // constant colour, RGBA 0..255
 uniform vec4 u_chroma;      // chroma-key colour, RGB 0..255 (a unused)
 uniform float u_alpha_ref;  // alpha-test reference, 0..255
-uniform vec4 u_color_unit[4], u_alpha_unit[4], u_tmu_rgb_unit[4], u_tmu_alpha_unit[4];
+uniform vec4 u_color_select, u_color_other;  // local is constant, invert; other one-hot
+uniform vec4 u_alpha_select, u_alpha_other;
+uniform vec2 u_tmu_invert;                    // rgb, alpha
 uniform sampler2D u_texture;
 uniform vec2 u_tex_size;    // largest level in texels
 uniform float u_tex_scale;  // texels per Glide s,t unit: the longer side / 256
-uniform vec4 u_tex_max;     // largest integer each stored channel holds (31, 63, 15, 1, 255)
 uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
 
-// A stored texel widened to 8 bits by bit replication, as the TMU does: the channel's bits
-// repeated and the first eight kept, which is floor(n * 256 / max) clamped to 255.
-vec4 widen(vec4 stored) {
-  vec4 n = floor(stored * u_tex_max + 0.5);
-  return min(floor(n * 256.0 / u_tex_max), vec4(255.0));
-}
+// A texel as the TMU widened it (0..255): the upload already holds the bit-replicated values.
 vec4 fetch(float i, float j) {  // texel indices, already clamped or wrapped
-  return widen(texture2D(u_texture, (vec2(i, j) + 0.5) / u_tex_size));
+  return floor(texture2D(u_texture, (vec2(i, j) + 0.5) / u_tex_size) * 255.0 + 0.5);
 }
 float clamp_index(float i, float size) { return clamp(i, 0.0, size - 1.0); }
 float wrap_index(float i, float size) { return mod(i, size); }
 
-// One combine unit: clamp(((other or 0) - (local or 0)) * (f + 1) >> 8 + add), then invert.
-// The selectors k[] are 0 or 1, so every product and sum stays an exact integer.
-vec3 combine_rgb(vec4 k0, vec4 k1, vec4 k2, vec3 local, vec3 other, float a_local,
-                 float a_other, vec4 tex) {
-  vec3 f = k1.x * local + vec3(k1.y * a_other + k1.z * a_local + k1.w * tex.a) + k2.x * tex.rgb;
-  f = mix(f, 255.0 - f, k2.y);
-  vec3 sum = floor((k0.x * other - k0.y * local) * (f + 1.0) / 256.0) + k0.z * local +
-             vec3(k0.w * a_local);
-  vec3 result = clamp(sum, 0.0, 255.0);
-  return mix(result, 255.0 - result, k2.w);
-}
-float combine_alpha(vec4 k0, vec4 k1, vec4 k2, float local, float other, float tex_a) {
-  float f = k1.x * local + k1.y * other + k1.z * local + k1.w * tex_a;
-  f = mix(f, 255.0 - f, k2.y);
-  float sum = floor((k0.x * other - k0.y * local) * (f + 1.0) / 256.0) + (k0.z + k0.w) * local;
-  float result = clamp(sum, 0.0, 255.0);
-  return mix(result, 255.0 - result, k2.w);
-}
 )";
 
 }  // namespace
 
-UnitUniforms color_unit_uniforms(const CombineUnit &unit) { return fbi_unit(unit, true); }
-UnitUniforms alpha_unit_uniforms(const CombineUnit &unit) { return fbi_unit(unit, false); }
-
-UnitUniforms tmu_unit_uniforms(GrCombineFunction_t function, GrCombineFactor_t factor,
-                               bool invert) {
+UnitUniforms unit_uniforms(const CombineUnit &unit) {
   UnitUniforms u;
-  set_function(u, function);
-  set_factor(u, factor, false, true);
-  u.v[2][3] = invert ? 1.0f : 0.0f;
+  u.select[0] = unit.local == GR_COMBINE_LOCAL_CONSTANT ? 1.0f : 0.0f;
+  u.select[1] = unit.invert ? 1.0f : 0.0f;
+  const int other = unit.other == GR_COMBINE_OTHER_TEXTURE    ? 1
+                    : unit.other == GR_COMBINE_OTHER_CONSTANT ? 2
+                                                              : 0;
+  u.other[other] = 1.0f;
   return u;
 }
 
@@ -146,8 +140,14 @@ bool reads_texture(const ColorPathState &path) {
 
 PipelineKey pipeline_key(const GlideContext &context) {
   PipelineKey key;
-  key.texture = reads_texture(context.color_path);
+  const ColorPathState &path = context.color_path;
+  key.color = shape(path.color.function, path.color.factor);
+  key.alpha = shape(path.alpha.function, path.alpha.factor);
+  key.texture = reads_texture(path);
   if (key.texture) {
+    const TexCombineUnit &tmu = context.tmu.combine;
+    key.tmu_rgb = shape(tmu.rgb_function, tmu.rgb_factor);
+    key.tmu_alpha = shape(tmu.alpha_function, tmu.alpha_factor);
     // With a single LOD the magnification filter decides (voodoo_pipeline.md, texture fetch).
     key.bilinear = context.tmu.mag_filter == GR_TEXTUREFILTER_BILINEAR;
     key.wrap_s = context.tmu.clamp_s == GR_TEXTURECLAMP_WRAP;
@@ -162,6 +162,9 @@ PipelineKey pipeline_key(const GlideContext &context) {
 
 std::string PipelineKey::defines() const {
   std::ostringstream s;
+  for (const UnitShape *unit : {&color, &alpha, &tmu_rgb, &tmu_alpha}) {
+    s << "unit " << unit->function << '/' << unit->factor << ' ';
+  }
   s << "texture " << texture << " bilinear " << bilinear << " wrap " << wrap_s << wrap_t
     << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither;
@@ -221,26 +224,27 @@ std::string fragment_shader_source(const PipelineKey &key) {
        "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
   if (key.texture) {
     s << "  vec4 texel = sample_tmu();\n"
-         "  vec4 tex = vec4(combine_rgb(u_tmu_rgb_unit[0], u_tmu_rgb_unit[1], u_tmu_rgb_unit[2],"
-         " texel.rgb, vec3(0.0), texel.a, 0.0, vec4(0.0)),\n"
-         "                  combine_alpha(u_tmu_alpha_unit[0], u_tmu_alpha_unit[1],"
-         " u_tmu_alpha_unit[2], texel.a, 0.0, 0.0));\n";
+      << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
+                      "0.0", "u_tmu_invert.x")
+      << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",
+                      "u_tmu_invert.y")
+      << "  vec4 tex = vec4(tmu_rgb, tmu_a);\n";
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
   }
-  s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_unit[2].z);\n"
-       "  vec3 c_other = u_color_unit[3].x * it.rgb + u_color_unit[3].y * tex.rgb +"
-       " u_color_unit[3].z * u_constant.rgb;\n"
-       "  float a_local = mix(it.a, u_constant.a, u_alpha_unit[2].z);\n"
-       "  float a_other = u_alpha_unit[3].x * it.a + u_alpha_unit[3].y * tex.a +"
-       " u_alpha_unit[3].z * u_constant.a;\n";
+  s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_select.x);\n"
+       "  vec3 c_other = u_color_other.x * it.rgb + u_color_other.y * tex.rgb +"
+       " u_color_other.z * u_constant.rgb;\n"
+       "  float a_local = mix(it.a, u_constant.a, u_alpha_select.x);\n"
+       "  float a_other = u_alpha_other.x * it.a + u_alpha_other.y * tex.a +"
+       " u_alpha_other.z * u_constant.a;\n";
   if (key.chroma_key) {
     s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on 'other'\n";
   }
-  s << "  vec3 rgb = combine_rgb(u_color_unit[0], u_color_unit[1], u_color_unit[2], c_local,"
-       " c_other, a_local, a_other, tex);\n"
-       "  float alpha = combine_alpha(u_alpha_unit[0], u_alpha_unit[1], u_alpha_unit[2],"
-       " a_local, a_other, tex.a);\n";
+  s << combine_code("rgb", key.color, true, true, "c_local", "c_other", "a_local", "a_other",
+                    "u_color_select.y")
+    << combine_code("alpha", key.alpha, false, true, "a_local", "a_other", "a_local", "a_other",
+                    "u_alpha_select.y");
 
   if (key.alpha_test == GR_CMP_NEVER) {
     s << "  discard;\n";

@@ -1,6 +1,7 @@
-// Uploading TMU memory to GL. The 16-bit formats GL reads natively go up as they are (3-4 us for
-// 256x256, osmesa_notes.md); the shader widens them by bit replication. The others are widened
-// here, once per upload, to RGBA8.
+// Uploading TMU memory to GL. ARGB_4444 goes up as it is (3-4 us for 256x256, osmesa_notes.md):
+// GL's widening of a 4-bit channel, n/15, is exactly the TMU's bit replication (17n). Every other
+// format is widened here by bit replication to RGBA8, once per upload, so the shader only reads
+// exact 8-bit values.
 #include "texture_cache.h"
 
 #include "texture_layout.h"
@@ -46,6 +47,14 @@ void decode_to_rgba8(GrTextureFormat_t format, const std::uint8_t *texels, int c
         a = static_cast<std::uint8_t>(t >> 8);
         r = replicate((t >> 5) & 7, 3), g = replicate((t >> 2) & 7, 3), b = replicate(t & 3, 2);
         break;
+      case GR_TEXFMT_RGB_565:
+        r = replicate(t >> 11, 5), g = replicate((t >> 5) & 0x3F, 6), b = replicate(t & 0x1F, 5);
+        break;
+      case GR_TEXFMT_ARGB_1555:
+        a = (t & 0x8000) != 0 ? 255 : 0;
+        r = replicate((t >> 10) & 0x1F, 5), g = replicate((t >> 5) & 0x1F, 5),
+        b = replicate(t & 0x1F, 5);
+        break;
       case GR_TEXFMT_ALPHA_INTENSITY_88:
         a = static_cast<std::uint8_t>(t >> 8), r = g = b = static_cast<std::uint8_t>(t & 0xFF);
         break;
@@ -58,24 +67,10 @@ void decode_to_rgba8(GrTextureFormat_t format, const std::uint8_t *texels, int c
 struct GlUpload {
   GLint internal_format;
   GLenum format, type;
-  float channel_max[4];
 };
 
-// Formats GL stores bit-exactly from the 16-bit words themselves; false for the rest.
-bool native_upload(GrTextureFormat_t format, GlUpload &upload) {
-  switch (format) {
-    case GR_TEXFMT_RGB_565:
-      upload = {GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, {31, 63, 31, 255}};
-      return true;
-    case GR_TEXFMT_ARGB_4444:  // A in bits 15-12: BGRA with the reversed packing
-      upload = {GL_RGBA4, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV, {15, 15, 15, 15}};
-      return true;
-    case GR_TEXFMT_ARGB_1555:
-      upload = {GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, {31, 31, 31, 1}};
-      return true;
-    default: return false;
-  }
-}
+constexpr GlUpload kArgb4444 = {GL_RGBA4, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV};  // A in 15-12
+constexpr GlUpload kWidened = {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
 
 }  // namespace
 
@@ -104,9 +99,8 @@ BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
   gl.glActiveTexture(GL_TEXTURE0);
   gl.glBindTexture(GL_TEXTURE_2D, entry->name);
 
-  GlUpload upload{};
-  const bool native = native_upload(source.format, upload);
-  if (!native) upload = {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, {255, 255, 255, 255}};
+  const bool native = source.format == GR_TEXFMT_ARGB_4444;
+  const GlUpload upload = native ? kArgb4444 : kWidened;
   if (entry->stale) {
     const std::uint8_t *texels = tmu.memory.data() + source.address;
     const void *pixels = texels;
@@ -135,7 +129,6 @@ BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
   bound.width = static_cast<float>(size.width);
   bound.height = static_cast<float>(size.height);
   bound.scale = static_cast<float>(size.width > size.height ? size.width : size.height) / 256.0f;
-  std::memcpy(bound.channel_max, upload.channel_max, sizeof bound.channel_max);
   return bound;
 }
 

@@ -13,7 +13,6 @@ namespace glide_shim {
 struct BoundTexture {
   float width = 1, height = 1;  // largest level, texels
   float scale = 1;              // texels per Glide s,t unit: longer side / 256
-  float channel_max[4] = {255, 255, 255, 255};  // largest integer per stored channel (RGBA)
 };
 
 class TextureCache {
