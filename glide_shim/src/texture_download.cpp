@@ -18,19 +18,23 @@ bool check_tmu(const char *function, GrChipID_t tmu);
 
 namespace {
 
-bool write_memory(const char *function, FxU32 address, const void *data, FxU32 bytes) {
-  auto &ctx = current();
-  if (address > glide_shim::kTmuMemoryBytes || bytes > glide_shim::kTmuMemoryBytes - address) {
-    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
-               std::string(function) + ": " + std::to_string(bytes) + " bytes at address " +
-                   std::to_string(address) + " run past the end of TMU memory (" +
-                   std::to_string(glide_shim::kTmuMemoryBytes) + " bytes)");
-    return false;
+// True when [address, address + bytes) lies in TMU memory; otherwise reports and returns false.
+bool fits_in_memory(const char *function, FxU32 address, FxU32 bytes) {
+  if (address <= glide_shim::kTmuMemoryBytes && bytes <= glide_shim::kTmuMemoryBytes - address) {
+    return true;
   }
+  current().report(GLIDESHIM_ERR_OUT_OF_RANGE,
+                   std::string(function) + ": " + std::to_string(bytes) + " bytes at address " +
+                       std::to_string(address) + " run past the end of TMU memory (" +
+                       std::to_string(glide_shim::kTmuMemoryBytes) + " bytes)");
+  return false;
+}
+
+void write_memory(FxU32 address, const void *data, FxU32 bytes) {
+  auto &ctx = current();
   ctx.flush();  // draws already queued must still see the old texels
   std::memcpy(ctx.tmu.memory.data() + address, data, bytes);
   ctx.renderer->textures().invalidate(address, address + bytes);
-  return true;
 }
 
 }  // namespace
@@ -66,12 +70,9 @@ void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTe
                                                GR_MIPMAPLEVELMASK_BOTH);
   const FxU32 stored = glide_shim::mipmap_bytes(info->smallLod, info->largeLod,
                                                 info->aspectRatio, info->format, evenOdd);
-  if (startAddress > glide_shim::kTmuMemoryBytes || stored > glide_shim::kTmuMemoryBytes - startAddress) {
-    write_memory("grTexDownloadMipMap", startAddress, source, stored);  // reports the overrun
-    return;
-  }
+  if (!fits_in_memory("grTexDownloadMipMap", startAddress, stored)) return;
   if (evenOdd == GR_MIPMAPLEVELMASK_BOTH) {
-    write_memory("grTexDownloadMipMap", startAddress, source, total);
+    write_memory(startAddress, source, total);
     return;
   }
   for (GrLOD_t lod = info->largeLod; lod <= info->smallLod; ++lod) {
@@ -83,7 +84,7 @@ void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTe
                                                 info->format, GR_MIPMAPLEVELMASK_BOTH);
     const bool even = lod % 2 == 0;
     if (even == (evenOdd == GR_MIPMAPLEVELMASK_EVEN)) {
-      write_memory("grTexDownloadMipMap", startAddress + to, source + from, next - from);
+      write_memory(startAddress + to, source + from, next - from);
     }
   }
 }
@@ -118,11 +119,9 @@ void grTexDownloadMipMapLevel(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLo
   const glide_shim::LevelSize size = glide_shim::level_size(thisLod, aspectRatio);
   const auto bytes =
       static_cast<FxU32>(size.width * size.height * glide_shim::bytes_per_texel(format));
-  if (offset > glide_shim::kTmuMemoryBytes || startAddress > glide_shim::kTmuMemoryBytes - offset) {
-    write_memory("grTexDownloadMipMapLevel", glide_shim::kTmuMemoryBytes, data, 1);
-    return;
-  }
-  write_memory("grTexDownloadMipMapLevel", startAddress + offset, data, bytes);
+  // A whole chain is at most ~175 KB, so offset + bytes cannot overflow.
+  if (!fits_in_memory("grTexDownloadMipMapLevel", startAddress, offset + bytes)) return;
+  write_memory(startAddress + offset, data, bytes);
 }
 
 }  // extern "C"

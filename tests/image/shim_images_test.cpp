@@ -6,6 +6,9 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace {
 
@@ -18,6 +21,37 @@ TEST(SampleProgram, HelloGlideWritesTheExpectedFrame) {
   const std::string command = std::string(HELLO_GLIDE_PATH) + " " + png + " > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_TRUE(matches_reference("hello_glide", png, kAcrossCpus));
+}
+
+std::string file_bytes(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST(SampleProgram, RunsAreByteIdentical) {
+  const std::string first = output_path("determinism_1.png"), second = output_path("determinism_2.png");
+  for (const std::string &png : {first, second}) {
+    const std::string command = std::string(HELLO_GLIDE_PATH) + " " + png + " > /dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  const std::string a = file_bytes(first), b = file_bytes(second);
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << first << " and " << second << " differ";
+}
+
+TEST(SampleProgram, DumpDirectoryGetsEveryDisplayedFrame) {
+  // GLIDESHIM_DUMP_DIR makes grBufferSwap write the displayed buffer, with no code change.
+  const std::filesystem::path dir = std::filesystem::path(output_path("dump"));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string png = output_path("dump_reference.png");
+  const std::string command = "GLIDESHIM_DUMP_DIR=" + dir.string() + " " + HELLO_GLIDE_PATH + " " +
+                              png + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string dumped = (dir / "frame_00000.png").string();
+  ASSERT_TRUE(std::filesystem::exists(dumped));
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_00001.png"));  // the program swaps once
+  EXPECT_TRUE(file_bytes(dumped) == file_bytes(png)) << "the dump differs from the front buffer";
 }
 
 class ShimImageTest : public GlideWindowTest {
