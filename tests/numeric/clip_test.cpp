@@ -35,8 +35,7 @@ std::string rgb565(FxU16 p) {
 }
 
 GrVertex at(float x, float y, float r, float g, float b) {
-  GrVertex v;
-  v = GrVertex{};
+  GrVertex v{};
   v.oow = 1.0f;
   v.x = x, v.y = y;
   v.r = r, v.g = g, v.b = b, v.a = 255.0f;
@@ -123,7 +122,7 @@ TEST_F(ClipTest, CrossingTriangleStaysInsideAndMatchesScissoredCoverage) {
     }
   }
   EXPECT_EQ(changed_outside, 0) << "pixels outside the clip window changed";
-  // The triangle covers most of the window (about 700 of its 1024 pixels), so the comparison
+  // The triangle covers most of the window (about 800 of its 1024 pixels), so the comparison
   // below is not vacuous.
   EXPECT_GT(covered_scissored, kWindowPixels / 2) << "the scissored triangle covers too little";
   EXPECT_GT(covered_clipped, kWindowPixels / 2) << "the clipped triangle covers too little";

@@ -269,7 +269,7 @@ TEST_F(LfbTest, PipelineWritesTruncateEveryLevelOfEveryChannel) {
   int wrong = 0;
   for (int n = 0; n < 256; ++n) {
     const int r = level(n, 0), g = level(n, 85), b = level(n, 170);
-    const FxU16 want = truncated_565(r, g, b);
+    const FxU16 want = voodoo_ref::pack_rgb565(voodoo_ref::Rgba{r, g, b, 255});
     for (int i = 0; i < 16; ++i) {
       const int x = n % 16 * 4 + i % 4, y = n / 16 * 4 + i / 4;
       const FxU16 got = frame[static_cast<std::size_t>(y * kW + x)];
