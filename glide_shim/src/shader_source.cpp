@@ -110,9 +110,10 @@ uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
 
-// A texel as the TMU widened it (0..255): the upload already holds the bit-replicated values.
-vec4 fetch(float i, float j) {  // texel indices, already clamped or wrapped
-  return floor(texture2D(u_texture, (vec2(i, j) + 0.5) / u_tex_size) * 255.0 + 0.5);
+// A texel as GL returns it, k/255 for the TMU's widened 8-bit value k (the upload already
+// holds the bit-replicated values); i, j are texel indices, already clamped or wrapped.
+vec4 fetch(float i, float j) {
+  return texture2D(u_texture, (vec2(i, j) + 0.5) / u_tex_size);
 }
 float clamp_index(float i, float size) { return clamp(i, 0.0, size - 1.0); }
 float wrap_index(float i, float size) { return mod(i, size); }
@@ -210,12 +211,15 @@ std::string fragment_shader_source(const PipelineKey &key) {
         << "(base.x + 1.0, u_tex_size.x);\n"
         << "  float j0 = " << address_t << "(base.y, u_tex_size.y), j1 = " << address_t
         << "(base.y + 1.0, u_tex_size.y);\n"
-        << "  return floor((fetch(i0, j0) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0) * f.x *"
-           " (16.0 - f.y) + fetch(i0, j1) * (16.0 - f.x) * f.y + fetch(i1, j1) * f.x * f.y) /"
-           " 256.0);\n";
+        << "  // Sum of the four integer products, recovered exactly by one rounding (the float\n"
+           "  // error of k/255 * 255 summed over the taps stays far below 0.5), then >> 8.\n"
+           "  vec4 sum = (fetch(i0, j0) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0) * f.x *"
+           " (16.0 - f.y) + fetch(i0, j1) * (16.0 - f.x) * f.y + fetch(i1, j1) * f.x * f.y) *"
+           " 255.0;\n"
+           "  return floor(floor(sum + 0.5) / 256.0);\n";
     } else {
-      s << "  return fetch(" << address_s << "(floor(uv.x), u_tex_size.x), " << address_t
-        << "(floor(uv.y), u_tex_size.y));\n";
+      s << "  return floor(fetch(" << address_s << "(floor(uv.x), u_tex_size.x), " << address_t
+        << "(floor(uv.y), u_tex_size.y)) * 255.0 + 0.5);\n";
     }
     s << "}\n";
   }
