@@ -44,6 +44,15 @@ GLIDESHIM_API const char *glideShimBackendName(void);
  * list lacks (default 640x480). Each side 1..2048; FXFALSE and nothing changed otherwise. */
 GLIDESHIM_API FxBool glideShimSetWindowSize(int width, int height);
 
+/* Rendering into texture memory, as a Voodoo Banshee could (the article's faster step 2): until
+ * glideShimRenderToFrameBuffer, draws and clears go to a square of `lod`'s size stored at
+ * `startAddress` of TMU memory, in the frame buffer's 565 words, with the clip window set to the
+ * square. The words are in TMU memory when glideShimRenderToFrameBuffer returns; grTexSource
+ * then reads them in any 16-bit format. FXFALSE (nothing changed) for a bad TMU, LOD or address,
+ * or when already rendering to a texture. */
+GLIDESHIM_API FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod);
+GLIDESHIM_API void glideShimRenderToFrameBuffer(void);
+
 /* Writes a colour buffer (GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER) as an 8-bit RGB PNG
  * through the Voodoo's gamma table, as the monitor would show it. FXFALSE (with an error
  * reported) if the buffer or path is bad. */

@@ -5,7 +5,10 @@
 #include "frame_export.h"
 #include "gl_renderer.h"
 
+#include "texture_layout.h"
+
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <string>
 
@@ -118,6 +121,49 @@ FxBool glideShimWritePng(GrBuffer_t buffer, const char *path) {
     return FXFALSE;
   }
   return FXTRUE;
+}
+
+FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod) {
+  auto &ctx = current();
+  if (!ctx.require_open("glideShimRenderToTexture")) return FXFALSE;
+  if (tmu != GR_TMU0 || !glide_shim::is_lod(lod)) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "glideShimRenderToTexture: TMU must be GR_TMU0 and lod "
+                                           "GR_LOD_256..GR_LOD_1");
+    return FXFALSE;
+  }
+  if (ctx.texture_target.active) {
+    ctx.report(GLIDESHIM_ERR_INCONSISTENT, "glideShimRenderToTexture: already rendering to a texture");
+    return FXFALSE;
+  }
+  const int side = 256 >> lod;
+  const auto bytes = static_cast<FxU32>(side * side * 2);
+  if (startAddress % 8 != 0 || startAddress > glide_shim::kTmuMemoryBytes ||
+      bytes > glide_shim::kTmuMemoryBytes - startAddress) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "glideShimRenderToTexture: a " + std::to_string(side) +
+                                               "x" + std::to_string(side) + " target at " +
+                                               std::to_string(startAddress) +
+                                               " is misaligned or beyond TMU memory");
+    return FXFALSE;
+  }
+  ctx.flush();
+  ctx.texture_target = {true, startAddress, side, ctx.raster.clip};
+  ctx.raster.clip = {0, 0, static_cast<FxU32>(side), static_cast<FxU32>(side)};
+  ctx.renderer->begin_texture_target(side);
+  return FXTRUE;
+}
+
+void glideShimRenderToFrameBuffer(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("glideShimRenderToFrameBuffer")) return;
+  if (!ctx.texture_target.active) return;  // already there: harmless, like grSstWinClose twice
+  glide_shim::TextureTarget &target = ctx.texture_target;
+  std::vector<std::uint16_t> words(static_cast<std::size_t>(target.side) * target.side);
+  ctx.renderer->end_texture_target(words.data());
+  const auto bytes = static_cast<FxU32>(words.size() * 2);
+  std::memcpy(ctx.tmu.memory.data() + target.address, words.data(), bytes);
+  ctx.renderer->textures().invalidate(target.address, target.address + bytes);
+  ctx.raster.clip = target.saved_clip;
+  target.active = false;
 }
 
 FxU32 glideShimPixelsWritten(void) {

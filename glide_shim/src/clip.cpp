@@ -9,6 +9,10 @@
 namespace glide_shim {
 namespace {
 
+// Vertices this far out are still clipped in float (guclip.c does the same); beyond it, float
+// precision in the interpolation is gone and the call is refused.
+constexpr float kMaxClippedCoordinate = 1.0e7f;
+
 ShimVertex lerp(const ShimVertex &a, const ShimVertex &b, float t) {
   auto mix = [t](float u, float v) { return u + (v - u) * t; };
   return {mix(a.x, b.x),     mix(a.y, b.y),     mix(a.depth, b.depth), mix(a.r, b.r),
@@ -49,10 +53,12 @@ void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex
   }
   const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
   std::vector<ShimVertex> polygon(3);
-  if (!glide_shim::to_shim_vertex(ctx, fields, *a, polygon[0], "guDrawTriangleWithClip") ||
-      !glide_shim::to_shim_vertex(ctx, fields, *b, polygon[1], "guDrawTriangleWithClip") ||
-      !glide_shim::to_shim_vertex(ctx, fields, *c, polygon[2], "guDrawTriangleWithClip")) {
-    return;
+  const GrVertex *in[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], polygon[static_cast<std::size_t>(i)],
+                                    "guDrawTriangleWithClip", glide_shim::kMaxClippedCoordinate)) {
+      return;
+    }
   }
   const auto &clip = ctx.raster.clip;
   const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);

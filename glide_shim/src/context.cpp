@@ -55,6 +55,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   display.swaps = 0;
 
   lfb = LfbLockState{};
+  texture_target = TextureTarget{};
 }
 
 void GlideContext::flush() {

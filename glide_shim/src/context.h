@@ -82,6 +82,13 @@ struct RasterState {
   FxU32 stw_hint;  // GR_HINT_STWHINT bits
 };
 
+struct TextureTarget {  // glideShimRenderToTexture
+  bool active = false;
+  FxU32 address = 0;
+  int side = 0;
+  ClipRect saved_clip{};
+};
+
 struct TextureSource {  // what grTexSource points TMU0 at
   bool valid;
   FxU32 address;  // byte address in TMU memory
@@ -140,6 +147,7 @@ class GlideContext {
   TmuState tmu{};
   DisplayState display{};
   LfbLockState lfb{};
+  TextureTarget texture_target{};
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;
 

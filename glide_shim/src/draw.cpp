@@ -13,7 +13,6 @@ namespace {
 // Programs that snap with the 3<<18 float trick sometimes never subtract it; the hardware
 // keeps only the low bits, so neither does the shim (as OpenGLide does).
 constexpr float kSnapOffset = 786432.0f;
-constexpr float kMaxCoordinate = 32768.0f;
 
 float remove_snap_offset(float v) {
   return (v >= kSnapOffset - 4096.0f && v < kSnapOffset + 4096.0f) ? v - kSnapOffset : v;
@@ -36,7 +35,7 @@ VertexFields fields_read(const GlideContext &context) {
 }
 
 bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
-                    ShimVertex &out, const char *function) {
+                    ShimVertex &out, const char *function, float max_coordinate) {
   out = ShimVertex{};
   const float x = remove_snap_offset(in.x), y = remove_snap_offset(in.y);
   bool finite = std::isfinite(x) && std::isfinite(y);
@@ -53,10 +52,10 @@ bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrV
                    std::string(function) + ": a vertex field the current state reads is NaN or infinite");
     return false;
   }
-  if (std::fabs(x) > kMaxCoordinate || std::fabs(y) > kMaxCoordinate) {
+  if (std::fabs(x) > max_coordinate || std::fabs(y) > max_coordinate) {
     context.report(GLIDESHIM_ERR_INVALID_VALUE,
                    std::string(function) + ": vertex (" + std::to_string(x) + ", " +
-                       std::to_string(y) + ") is beyond the 12.4 fixed-point range of +-32768");
+                       std::to_string(y) + ") is beyond +-" + std::to_string(max_coordinate));
     return false;
   }
   out.x = snap(x);

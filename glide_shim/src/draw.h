@@ -13,9 +13,14 @@ struct VertexFields {  // which GrVertex fields the current state reads
 
 VertexFields fields_read(const GlideContext &context);
 
-// False (with an error reported naming `function`) for NaN, infinity or absurd coordinates.
+// The largest |x| or |y| the rasteriser takes: Glide's 12.4 fixed-point setup range.
+constexpr float kMaxScreenCoordinate = 32768.0f;
+
+// False (with an error reported naming `function`) for NaN, infinity or coordinates beyond
+// `max_coordinate`; guDrawTriangleWithClip passes a larger bound, since it clips first.
 bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
-                    ShimVertex &out, const char *function);
+                    ShimVertex &out, const char *function,
+                    float max_coordinate = kMaxScreenCoordinate);
 
 // Culls by the signed area of the snapped vertices (zero area is always dropped) and queues.
 void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,

@@ -75,6 +75,11 @@ GlRenderer::~GlRenderer() {
   gl.glDeleteFramebuffers(1, &framebuffer_);
   gl.glDeleteRenderbuffers(2, color_buffers_);
   gl.glDeleteRenderbuffers(1, &depth_buffer_);
+  if (texture_framebuffer_ != 0) {
+    gl.glDeleteFramebuffers(1, &texture_framebuffer_);
+    gl.glDeleteRenderbuffers(1, &texture_color_);
+    gl.glDeleteRenderbuffers(1, &texture_depth_);
+  }
 }
 
 std::unique_ptr<GlRenderer> GlRenderer::create(GlideContext &context, BackendKind kind,
@@ -109,6 +114,7 @@ bool GlRenderer::build_framebuffer(std::string &error) {
     error = "the RGB565 + depth framebuffer object is incomplete";
     return false;
   }
+  target_ = {framebuffer_, width_, height_};
   gl.glViewport(0, 0, width_, height_);
   gl.glDisable(GL_DITHER);  // the shader does the Voodoo's dither itself
   gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -183,12 +189,15 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
 void GlRenderer::apply_fixed_function_state() {
   const GlFunctions &gl = backend_->gl;
   const RasterState &raster = context_.raster;
-  gl.glDrawBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + buffer_index(raster.render_buffer)));
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer);
+  gl.glViewport(0, 0, target_.width, target_.height);
+  const int attachment = target_.framebuffer == framebuffer_ ? buffer_index(raster.render_buffer) : 0;
+  gl.glDrawBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + attachment));
 
   // The clip window is in the Glide origin; GL's scissor counts rows from the bottom.
   const ClipRect &clip = raster.clip;
   const int clip_bottom = raster.origin == GR_ORIGIN_UPPER_LEFT
-                              ? height_ - static_cast<int>(clip.max_y)
+                              ? target_.height - static_cast<int>(clip.max_y)
                               : static_cast<int>(clip.min_y);
   gl.glEnable(GL_SCISSOR_TEST);
   gl.glScissor(static_cast<int>(clip.min_x), clip_bottom,
@@ -233,12 +242,12 @@ void GlRenderer::flush() {
     queue_.clear();
     return;
   }
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   apply_fixed_function_state();
   gl.glUseProgram(program->program);
-  gl.glUniform2f(program->screen, static_cast<float>(width_), static_cast<float>(height_));
+  gl.glUniform2f(program->screen, static_cast<float>(target_.width),
+                 static_cast<float>(target_.height));
   gl.glUniform1f(program->y_down, context_.raster.origin == GR_ORIGIN_UPPER_LEFT ? 1.0f : 0.0f);
-  gl.glUniform1f(program->screen_height, static_cast<float>(height_));
+  gl.glUniform1f(program->screen_height, static_cast<float>(target_.height));
   const Rgba8 constant =
       unpack_color(context_.color_path.constant_color, context_.display.color_format);
   gl.glUniform4f(program->constant, constant.r, constant.g, constant.b, constant.a);
@@ -300,7 +309,6 @@ void GlRenderer::start_counting() {
 void GlRenderer::clear(std::uint16_t rgb565, bool color, double gl_depth, bool depth) {
   flush();
   const GlFunctions &gl = backend_->gl;
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   apply_fixed_function_state();
   GLbitfield mask = 0;
   if (color && context_.raster.rgb_mask) {
@@ -354,6 +362,43 @@ void GlRenderer::write_color(int index, int x, int y, int w, int h, const std::u
   gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   gl.glWindowPos2i(x, height_ - (y + h));
   gl.glDrawPixels(w, h, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, block.data());
+}
+
+void GlRenderer::begin_texture_target(int side) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  if (side != texture_side_) {
+    if (texture_framebuffer_ == 0) {
+      gl.glGenFramebuffers(1, &texture_framebuffer_);
+      gl.glGenRenderbuffers(1, &texture_color_);
+      gl.glGenRenderbuffers(1, &texture_depth_);
+    }
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, texture_framebuffer_);
+    gl.glBindRenderbuffer(GL_RENDERBUFFER, texture_color_);
+    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGB565, side, side);
+    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                 texture_color_);
+    gl.glBindRenderbuffer(GL_RENDERBUFFER, texture_depth_);
+    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, side, side);
+    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                 texture_depth_);
+    texture_side_ = side;
+  }
+  target_ = {texture_framebuffer_, side, side};
+}
+
+void GlRenderer::end_texture_target(std::uint16_t *words) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, texture_framebuffer_);
+  gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
+  std::vector<std::uint16_t> block(static_cast<std::size_t>(texture_side_) * texture_side_);
+  gl.glReadPixels(0, 0, texture_side_, texture_side_, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, block.data());
+  for (int row = 0; row < texture_side_; ++row) {  // GL rows bottom first; texels top first
+    const std::uint16_t *line = block.data() + static_cast<std::size_t>(texture_side_ - 1 - row) * texture_side_;
+    std::copy(line, line + texture_side_, words + static_cast<std::size_t>(row) * texture_side_);
+  }
+  target_ = {framebuffer_, width_, height_};
 }
 
 void GlRenderer::read_depth(int x, int y, int w, int h, float *dst) {

@@ -54,6 +54,11 @@ class GlRenderer {
 
   TextureCache &textures() { return textures_; }
 
+  // Draws and clears go to a side x side 565 target standing for texture memory, until
+  // end_texture_target hands its words back (rows from the top) and returns to the frame buffer.
+  void begin_texture_target(int side);
+  void end_texture_target(std::uint16_t *words);
+
   void start_counting();
   std::uint32_t pixels_counted() const { return pixels_counted_; }
 
@@ -63,9 +68,17 @@ class GlRenderer {
   const ShaderProgram *program_for(const PipelineKey &key);
   void apply_fixed_function_state();
 
+  struct Target {
+    unsigned framebuffer = 0;
+    int width = 0, height = 0;
+  };
+
   GlideContext &context_;
   std::unique_ptr<Backend> backend_;
-  int width_, height_;
+  int width_, height_;  // the frame buffer
+  Target target_;        // where draws go: the frame buffer or the texture target
+  unsigned texture_framebuffer_ = 0, texture_color_ = 0, texture_depth_ = 0;
+  int texture_side_ = 0;
   unsigned framebuffer_ = 0;
   unsigned color_buffers_[2] = {0, 0};
   unsigned depth_buffer_ = 0;

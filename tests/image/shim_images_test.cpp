@@ -28,6 +28,15 @@ std::string file_bytes(const std::string &path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+TEST(SampleProgram, ArticlePortRendersItsShadow) {
+  // The article's five steps as plain C Glide code (demo/article_port.c), run as a user would.
+  const std::string png = output_path("article_port.png");
+  std::remove(png.c_str());
+  const std::string command = std::string(ARTICLE_PORT_PATH) + " " + png + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  EXPECT_TRUE(matches_reference("article_port", png, kAcrossCpus));
+}
+
 TEST(SampleProgram, RunsAreByteIdentical) {
   const std::string first = output_path("determinism_1.png"), second = output_path("determinism_2.png");
   for (const std::string &png : {first, second}) {

@@ -264,3 +264,23 @@ TEST_F(ClipTest, TrianglesOutsideTheWindowDrawNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(GlideWindowTest, FarOffScreenVerticesAreClippedNotRefused) {
+  // guclip.c clips in floating point, so a vertex far beyond the 12.4 range still draws the
+  // visible part (grDrawTriangle, which does not clip, refuses it).
+  grDitherMode(GR_DITHER_DISABLE);
+  GrVertex a = vertex(), b = vertex(), c = vertex();
+  a.x = 4, a.y = 4;
+  b.x = 50000, b.y = 20;
+  c.x = 4, c.y = 60;
+  a.r = b.r = c.r = 255;
+  guDrawTriangleWithClip(&a, &b, &c);
+  expect_no_error();
+  EXPECT_EQ(pixel(30, 30), 0xF800);
+  grDrawTriangle(&a, &b, &c);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_INVALID_VALUE);
+}
+
+}  // namespace

@@ -1,0 +1,311 @@
+// glideshadows: the command-line tool. `demo` renders the fight headless with shadows; `render`
+// renders a scene file and optionally its shadow mask. Every subcommand has --help.
+#include "fight_scene.h"
+#include "projected_shadow.h"
+#include "scene.h"
+
+#include <CLI/CLI.hpp>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+#include <glide.h>
+#include <glide_shim.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TechniqueChoice {
+  std::string name = "projected";
+  bool direct_path = false, point = false, affine = false, auto_size = false;
+  std::string alpha = "constant";
+};
+
+const std::vector<std::string> kTechniques = {"projected", "projected-chroma", "none"};
+
+void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size) {
+  command.add_option("--technique", choice.name, "shadow technique")
+      ->check(CLI::IsMember(kTechniques))
+      ->capture_default_str();
+  command.add_option("--shadow-size", shadow_size,
+                     "shadow texture side in texels (32..256: a Voodoo 1 texture)")
+      ->check(CLI::IsMember({32, 64, 128, 256}))
+      ->capture_default_str();
+  command.add_flag("--direct-path", choice.direct_path,
+                   "step 1 renders straight into texture memory instead of the back buffer + LFB read");
+  command.add_flag("--point", choice.point, "point-sample the shadow texture (default bilinear)");
+  command.add_flag("--affine", choice.affine,
+                   "divide (s,t) per vertex as the article's listing does (default per pixel)");
+  command.add_flag("--auto-size", choice.auto_size,
+                   "texture size follows the caster's size on screen (the article's LOD idea)");
+  command.add_option("--alpha", choice.alpha, "iterated alpha: constant (170) or distance")
+      ->check(CLI::IsMember({"constant", "distance"}))
+      ->capture_default_str();
+}
+
+gs::ProjectedShadowOptions shadow_options(const TechniqueChoice &choice, int shadow_size) {
+  gs::ProjectedShadowOptions options;
+  options.size = shadow_size;
+  options.auto_size = choice.auto_size;
+  options.bilinear = !choice.point;
+  options.direct_path = choice.direct_path;
+  options.chroma_key = choice.name == "projected-chroma";
+  options.projective = !choice.affine;
+  options.alpha = choice.alpha == "distance" ? gs::ShadowAlpha::Distance : gs::ShadowAlpha::Constant;
+  return options;
+}
+
+bool open_window(int width, int height) {
+  grGlideInit();
+  if (!glideShimSetWindowSize(width, height) ||
+      !grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                    GR_ORIGIN_UPPER_LEFT, 2, 1)) {
+    std::fprintf(stderr, "glideshadows: cannot open a %dx%d Glide window: %s\n", width, height,
+                 glideShimGetLastErrorMessage());
+    return false;
+  }
+  grGammaCorrectionValue(0.8f);  // Listing 4
+  return true;
+}
+
+// Renders one frame into the back buffer with the chosen technique.
+gs::ShadowFrame render_frame(const gs::Scene &scene, const TechniqueChoice &choice,
+                             const gs::ProjectedShadowOptions &options, bool synchronous) {
+  if (choice.name == "none") {
+    gs::ShadowFrame frame;
+    gs::render_scene(scene, gs::project_scene(scene));
+    return frame;
+  }
+  return gs::render_projected_shadows(scene, options, synchronous);
+}
+
+bool check_lfb_fits(const TechniqueChoice &choice, int shadow_size, int width, int height) {
+  if (choice.direct_path || choice.name == "none" || (shadow_size <= width && shadow_size <= height)) {
+    return true;
+  }
+  std::fprintf(stderr,
+               "glideshadows: a %dx%d shadow texture does not fit in the %dx%d back buffer that "
+               "step 1 draws into; use a larger --size or --direct-path\n",
+               shadow_size, shadow_size, width, height);
+  return false;
+}
+
+bool parse_size(const std::string &text, int &width, int &height) {
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || (x != 'x' && x != 'X')) {
+    return false;
+  }
+  return width >= 64 && height >= 64 && width <= 2048 && height <= 2048;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+void print_step_table(const std::vector<gs::StepTimes> &times) {
+  static const char *kSteps[5] = {"1 render the caster from the light", "2 make the texture (LFB read + download)",
+                                  "3 (s,t) for the receivers", "4 render the scene",
+                                  "5 shadow pass over the flagged triangles"};
+  std::vector<double> total;
+  for (const gs::StepTimes &t : times) total.push_back(t.total_ms);
+  const double frame = median(total);
+  std::printf("\nStep timing (median of %zu frames, each step synchronised):\n", times.size());
+  for (int step = 0; step < 5; ++step) {
+    std::vector<double> values;
+    for (const gs::StepTimes &t : times) values.push_back(t.ms[step]);
+    const double ms = median(values);
+    std::printf("  step %-44s %7.2f ms  %5.1f%%\n", kSteps[step], ms, frame > 0 ? 100.0 * ms / frame : 0.0);
+  }
+  std::printf("  %-49s %7.2f ms  (%.0f frames/s)\n", "whole frame", frame, frame > 0 ? 1000.0 / frame : 0.0);
+}
+
+bool write_contact_sheet(const std::vector<std::string> &frames, const std::string &path) {
+  const std::size_t count = std::min<std::size_t>(frames.size(), 16);
+  if (count == 0) return true;
+  const int columns = 4;
+  const int rows = static_cast<int>((count + columns - 1) / columns);
+  OIIO::ImageBuf first(frames[0]);
+  if (!first.read()) return false;
+  const int w = first.spec().width / 2, h = first.spec().height / 2;
+  OIIO::ImageBuf sheet(OIIO::ImageSpec(w * columns, h * rows, 3, OIIO::TypeDesc::UINT8));
+  OIIO::ImageBufAlgo::zero(sheet);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t index = i * frames.size() / count;  // spread over the whole run
+    OIIO::ImageBuf frame(frames[index]);
+    OIIO::ImageBuf small = OIIO::ImageBufAlgo::resize(frame, "", 0, OIIO::ROI(0, w, 0, h, 0, 1, 0, 3));
+    const int x = static_cast<int>(i % columns) * w, y = static_cast<int>(i / columns) * h;
+    OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, small);
+  }
+  return sheet.write(path);
+}
+
+bool write_gif(const std::vector<std::string> &frames, const std::string &path, int fps) {
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+  if (!out || !out->supports("multiimage") || frames.empty()) return false;
+  std::vector<OIIO::ImageSpec> specs;
+  std::vector<OIIO::ImageBuf> images;
+  for (const std::string &file : frames) {
+    OIIO::ImageBuf frame(file);
+    if (!frame.read()) return false;
+    OIIO::ImageBuf small = OIIO::ImageBufAlgo::resize(
+        frame, "", 0, OIIO::ROI(0, frame.spec().width / 2, 0, frame.spec().height / 2, 0, 1, 0, 3));
+    OIIO::ImageSpec spec = small.spec();
+    spec.attribute("FramesPerSecond", OIIO::TypeRational, std::vector<int>{fps, 1}.data());
+    spec.attribute("oiio:Movie", 1);
+    specs.push_back(spec);
+    images.push_back(std::move(small));
+  }
+  if (!out->open(path, static_cast<int>(specs.size()), specs.data())) return false;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    if (i > 0 && !out->open(path, specs[i], OIIO::ImageOutput::AppendSubimage)) return false;
+    if (!images[i].write(out.get())) return false;
+  }
+  return out->close();
+}
+
+int run_demo(int frames, const std::string &size_text, int shadow_size, const TechniqueChoice &choice,
+             const std::string &out_dir, int fps, bool gif, bool sheet) {
+  int width = 0, height = 0;
+  if (!parse_size(size_text, width, height)) {
+    std::fprintf(stderr, "glideshadows demo: --size '%s' must be WxH with each side 64..2048\n", size_text.c_str());
+    return 2;
+  }
+  if (!check_lfb_fits(choice, shadow_size, width, height)) return 2;
+  std::error_code error;
+  fs::create_directories(out_dir, error);
+  if (error) {
+    std::fprintf(stderr, "glideshadows demo: cannot create '%s': %s\n", out_dir.c_str(), error.message().c_str());
+    return 1;
+  }
+  if (!open_window(width, height)) return 1;
+  gs::FightScene fight(width, height, shadow_size);
+  const gs::ProjectedShadowOptions options = shadow_options(choice, shadow_size);
+  std::vector<gs::StepTimes> times;
+  std::vector<std::string> written;
+  std::vector<std::string> warnings;
+  const bool tty = isatty(fileno(stderr)) != 0;
+  for (int i = 0; i < frames; ++i) {
+    const gs::Scene &scene = fight.at(static_cast<float>(i) / static_cast<float>(fps));
+    const gs::ShadowFrame frame = render_frame(scene, choice, options, true);
+    if (i > 0) times.push_back(frame.times);  // frame 0 pays llvmpipe's shader compiles
+    for (const std::string &w : frame.warnings) {
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+    }
+    grBufferSwap(1);
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    const std::string path = (fs::path(out_dir) / name).string();
+    if (!glideShimWritePng(GR_BUFFER_FRONTBUFFER, path.c_str())) {
+      std::fprintf(stderr, "\nglideshadows demo: %s\n", glideShimGetLastErrorMessage());
+      grGlideShutdown();
+      return 1;
+    }
+    written.push_back(path);
+    if (tty) {
+      std::fprintf(stderr, "\rframe %d/%d", i + 1, frames);
+    } else if ((i + 1) % std::max(1, frames / 10) == 0 || i + 1 == frames) {
+      std::fprintf(stderr, "frame %d/%d\n", i + 1, frames);
+    }
+  }
+  if (tty) std::fprintf(stderr, "\n");
+  grGlideShutdown();
+  for (const std::string &w : warnings) std::fprintf(stderr, "glideshadows demo: warning: %s\n", w.c_str());
+  std::printf("glideshadows demo: %d frames %dx%d, technique %s, shadow texture %d, in %s/frame_NNNN.png\n",
+              frames, width, height, choice.name.c_str(), shadow_size, out_dir.c_str());
+  if (choice.name != "none" && !times.empty()) print_step_table(times);
+  if (sheet) {
+    const std::string path = (fs::path(out_dir) / "contact_sheet.png").string();
+    if (!write_contact_sheet(written, path)) {
+      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), OIIO::geterror().c_str());
+      return 1;
+    }
+    std::printf("contact sheet: %s\n", path.c_str());
+  }
+  if (gif) {
+    const std::string path = (fs::path(out_dir) / "fight.gif").string();
+    if (!write_gif(written, path, fps)) {
+      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), OIIO::geterror().c_str());
+      return 1;
+    }
+    std::printf("animated GIF: %s\n", path.c_str());
+  }
+  return 0;
+}
+
+int run_render(const std::string &scene_path, const TechniqueChoice &choice, int shadow_size,
+               const std::string &out, const std::string &mask) {
+  gs::Scene scene;
+  std::string error;
+  if (!gs::load_scene(scene_path, scene, error)) {
+    std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
+    return 1;
+  }
+  if (shadow_size > 0) {
+    for (gs::SpotLight &light : scene.lights) light.shadow_size = shadow_size;
+  }
+  const int size = scene.lights.empty() ? 256 : scene.lights[0].shadow_size;
+  if (!check_lfb_fits(choice, size, scene.width, scene.height)) return 2;
+  if (!open_window(scene.width, scene.height)) return 1;
+  const gs::ProjectedShadowOptions options = shadow_options(choice, size);
+  const gs::ShadowFrame frame = render_frame(scene, choice, options, false);
+  for (const std::string &w : frame.warnings) std::fprintf(stderr, "glideshadows render: warning: %s\n", w.c_str());
+  bool ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, out.c_str());
+  if (ok) std::printf("image: %s\n", out.c_str());
+  if (ok && !mask.empty()) {
+    const float gamma = 1.0f;  // the mask is data, not a picture: no gamma
+    grGammaCorrectionValue(gamma);
+    gs::render_shadow_mask(scene, options, frame);
+    ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, mask.c_str());
+    if (ok) std::printf("mask: %s (white: pixels the technique darkened)\n", mask.c_str());
+  }
+  if (!ok) std::fprintf(stderr, "glideshadows render: %s\n", glideShimGetLastErrorMessage());
+  grGlideShutdown();
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  CLI::App app{"glideshadows: Glide-era projected shadow textures on a Glide 2.x shim, headless"};
+  app.require_subcommand(1);
+
+  CLI::App *demo = app.add_subcommand("demo", "render the fighting-game demo to PNG frames and print the step timing");
+  int frames = 48, fps = 30, shadow_size = 256;
+  std::string size = "640x480", out_dir = "out/demo";
+  bool gif = false, sheet = false;
+  TechniqueChoice demo_choice;
+  demo->add_option("--frames", frames, "number of frames")->check(CLI::Range(1, 100000))->capture_default_str();
+  demo->add_option("--size", size, "screen size WxH")->capture_default_str();
+  demo->add_option("--out", out_dir, "directory for frame_NNNN.png")->capture_default_str();
+  demo->add_option("--fps", fps, "animation frames per second of fight time")->check(CLI::Range(1, 240))->capture_default_str();
+  demo->add_flag("--gif", gif, "also write an animated GIF (half size) of the frames");
+  demo->add_flag("--contact-sheet", sheet, "also write a 4x4 contact sheet of frames from the run");
+  add_technique_options(*demo, demo_choice, shadow_size);
+
+  CLI::App *render = app.add_subcommand("render", "render a scene file (JSON, docs/scene_format.md)");
+  std::string scene_path, out = "render.png", mask;
+  int render_shadow_size = 0;
+  TechniqueChoice render_choice;
+  render->add_option("scene", scene_path, "scene file")->required()->check(CLI::ExistingFile);
+  render->add_option("--out", out, "output PNG")->capture_default_str();
+  render->add_option("--mask", mask, "also write the shadow mask PNG (white: darkened by the technique)");
+  add_technique_options(*render, render_choice, render_shadow_size);
+  render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
+  render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256}));
+
+  CLI11_PARSE(app, argc, argv);
+  if (demo->parsed()) {
+    return run_demo(frames, size, shadow_size, demo_choice, out_dir, fps, gif, sheet);
+  }
+  return run_render(scene_path, render_choice, render_shadow_size, out, mask);
+}

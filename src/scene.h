@@ -1,0 +1,53 @@
+// A scene: meshes placed in the world, spotlights, a camera and the screen size. Everything a
+// technique needs to render a frame; built in code (the demo) or read from a JSON scene file.
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace gs {
+
+struct SceneObject {
+  std::string name;
+  Mesh mesh;                       // model space
+  Mesh shadow_mesh;                // simplified caster for the shadow pass; empty: use `mesh`
+  glm::mat4 model_to_world{1.0f};
+  bool casts_shadow = true;
+  bool receives_shadow = true;
+};
+
+struct SpotLight {
+  glm::vec3 position{0.0f, 5.0f, 0.0f};  // world
+  glm::vec3 target{0.0f};                // world
+  float cone_degrees = 60.0f;            // full angle of the beam
+  glm::vec3 color{1.0f};
+  float shadow_strength = 170.0f / 255.0f;  // the article's iterated alpha 170
+  int shadow_size = 256;                    // shadow texture side, texels
+};
+
+struct Camera {
+  glm::vec3 position{0.0f, 2.0f, 6.0f};  // world
+  glm::vec3 target{0.0f, 1.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_degrees = 50.0f;  // vertical
+  float near_plane = 0.1f;
+  float far_plane = 100.0f;
+};
+
+struct Scene {
+  std::vector<SceneObject> objects;
+  std::vector<SpotLight> lights;
+  Camera camera;
+  glm::vec3 ambient{0.25f};
+  glm::vec3 background{0.05f, 0.06f, 0.1f};
+  int width = 640, height = 480;  // screen, pixels
+};
+
+// Reads a JSON scene file (format: docs/scene_format.md). Paths inside (OBJ meshes) are relative
+// to the file. False, with `error` naming the file and the field, on any problem; `scene` is
+// left unchanged then.
+bool load_scene(const std::string &path, Scene &scene, std::string &error);
+
+}  // namespace gs
