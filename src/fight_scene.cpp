@@ -14,7 +14,7 @@ namespace gs {
 namespace {
 
 const glm::vec3 kBodyColors[2] = {{0.75f, 0.12f, 0.1f}, {0.12f, 0.25f, 0.75f}};
-constexpr float kStartX = 0.85f;       // each fighter's distance from the centre, metres
+constexpr float kStartX = 0.55f;  // each fighter's distance from the centre, metres: in reach
 constexpr float kOrbitSeconds = 24.0f;
 
 }  // namespace
