@@ -4,10 +4,9 @@
 // facing +z, so the fighter's left is +x.
 #include "fighter.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
 namespace gs {
@@ -20,8 +19,9 @@ constexpr float kSideX[2] = {1.0f, -1.0f};  // facing +z, the left side is +x
 constexpr float kHipHalfSpacing = 0.095f;  // hip joints either side of the pelvis centre
 constexpr float kThighLength = 0.44f;
 constexpr float kShinLength = 0.42f;
-constexpr float kAnkleHeight = 0.09f;  // ankle joint above the sole; with straight legs the hips
-                                       // stand at 0.44 + 0.42 + 0.09 = 0.95, FighterPose's default
+// The ankle joint above the sole: with straight legs the hips stand 0.44 + 0.42 + 0.09 = 0.95 m
+// up, FighterPose's default.
+constexpr float kAnkleHeight = 0.09f;
 constexpr float kWaistHeight = 0.10f;  // torso pivot above the hip joints
 constexpr float kShoulderHalfWidth = 0.20f;
 constexpr float kShoulderHeight = 0.43f;  // above the waist
@@ -49,8 +49,8 @@ glm::mat4 limb_frame(const glm::mat4 &joint, const glm::vec2 &swing_and_spread, 
 
 Skeleton solve_skeleton(const FighterPose &pose) {
   Skeleton bones;
-  bones.pelvis = glm::translate(glm::mat4(1.0f),
-                                pose.root_offset + glm::vec3(0.0f, pose.hips_height, 0.0f));
+  bones.pelvis =
+      glm::translate(glm::mat4(1.0f), pose.root_offset + glm::vec3(0.0f, pose.hips_height, 0.0f));
   // A positive lean tips the top of the torso (and a positive nod the head) towards +z; a
   // positive twist brings the right shoulder forward.
   const glm::mat4 waist = glm::translate(bones.pelvis, {0.0f, kWaistHeight, 0.0f});
@@ -59,17 +59,17 @@ Skeleton solve_skeleton(const FighterPose &pose) {
       glm::rotate(glm::translate(bones.torso, {0.0f, kNeckTop, 0.0f}), pose.head_nod, kAxisX);
   for (int side = 0; side < 2; ++side) {
     const float x = kSideX[side];
-    bones.upper_arm[side] = limb_frame(
-        glm::translate(bones.torso, {x * kShoulderHalfWidth, kShoulderHeight, 0.0f}),
-        pose.shoulder[side], x);
+    bones.upper_arm[side] =
+        limb_frame(glm::translate(bones.torso, {x * kShoulderHalfWidth, kShoulderHeight, 0.0f}),
+                   pose.shoulder[side], x);
     // The elbow folds the forearm forward and up, the knee folds the shin backwards.
-    bones.forearm[side] = glm::rotate(
-        glm::translate(bones.upper_arm[side], {0.0f, -kUpperArmLength, 0.0f}), -pose.elbow[side],
-        kAxisX);
+    bones.forearm[side] =
+        glm::rotate(glm::translate(bones.upper_arm[side], {0.0f, -kUpperArmLength, 0.0f}),
+                    -pose.elbow[side], kAxisX);
     bones.thigh[side] = limb_frame(glm::translate(bones.pelvis, {x * kHipHalfSpacing, 0.0f, 0.0f}),
                                    pose.hip[side], x);
-    bones.shin[side] = glm::rotate(
-        glm::translate(bones.thigh[side], {0.0f, -kThighLength, 0.0f}), pose.knee[side], kAxisX);
+    bones.shin[side] = glm::rotate(glm::translate(bones.thigh[side], {0.0f, -kThighLength, 0.0f}),
+                                   pose.knee[side], kAxisX);
     // The ankle keeps the sole level, so the foot only moves with the ankle (model space).
     const glm::vec3 ankle(bones.shin[side] * glm::vec4(0.0f, -kShinLength, 0.0f, 1.0f));
     bones.foot[side] = glm::translate(glm::mat4(1.0f), ankle);
@@ -82,7 +82,8 @@ Skeleton solve_skeleton(const FighterPose &pose) {
 FighterPose planted(FighterPose pose) {
   pose.hips_height = 0.0f;
   const Skeleton bones = solve_skeleton(pose);
-  const float lowest_sole = std::min(bones.foot[kLeft][3].y, bones.foot[kRight][3].y) - kAnkleHeight;
+  const float lowest_sole =
+      std::min(bones.foot[kLeft][3].y, bones.foot[kRight][3].y) - kAnkleHeight;
   pose.hips_height = pose.root_offset.y - lowest_sole;
   return pose;
 }
@@ -218,17 +219,20 @@ struct ScheduledMove {
 // their guard until the loop restarts. Every move starts and ends in the guard, so the loop
 // is continuous at each boundary and at the wrap.
 constexpr ScheduledMove kFightLoop[] = {
-    {0, Move::Step, 0.2f, 1.2f},         {0, Move::Punch, 1.6f, 1.0f},
-    {1, Move::HitReaction, 2.0f, 1.2f},  {1, Move::Step, 3.4f, 1.2f},
-    {1, Move::Kick, 4.6f, 1.5f},         {0, Move::HitReaction, 5.3f, 1.2f},
+    {0, Move::Step, 0.2f, 1.2f},         // 0.4 m in and back out
+    {0, Move::Punch, 1.6f, 1.0f},        // full reach 2.05-2.2 s
+    {1, Move::HitReaction, 2.0f, 1.2f},  // snapped back hardest at 2.36 s
+    {1, Move::Step, 3.4f, 1.2f},         // towards fighter 0
+    {1, Move::Kick, 4.6f, 1.5f},         // full reach 5.35-5.53 s
+    {0, Move::HitReaction, 5.3f, 1.2f},  // the last move ends at 6.5 s
 };
 constexpr float kFightLoopSeconds = 8.0f;
 
 // The parts' tessellations: the full mesh for the eye, the coarse one for the shadow pass.
 struct Tessellation {
   int head_slices, head_stacks;
-  int trunk_slices;  // pelvis, abdomen, chest
-  int limb_slices;   // arms, legs, neck
+  int trunk_slices;                // pelvis, abdomen, chest
+  int limb_slices;                 // arms, legs, neck
   int joint_slices, joint_stacks;  // shoulders, elbows, knees
   int glove_slices, glove_stacks;
 };
@@ -294,8 +298,8 @@ Mesh build_parts(const FighterPose &pose, const Tessellation &detail, const Pale
                  detail.limb_slices, palette.body);
     add_ellipsoid(mesh, bones.thigh[side], {0.0f, -kThighLength, 0.0f}, glm::vec3(0.056f),
                   detail.joint_slices, detail.joint_stacks, palette.body);  // knee
-    add_cylinder(mesh, bones.shin[side], -kShinLength, 0.0f, glm::vec2(0.052f),
-                 detail.limb_slices, palette.body);
+    add_cylinder(mesh, bones.shin[side], -kShinLength, 0.0f, glm::vec2(0.052f), detail.limb_slices,
+                 palette.body);
     // The sole is kAnkleHeight below the ankle; the toes point along +z.
     add_box(mesh, bones.foot[side], {0.0f, -0.5f * kAnkleHeight, 0.05f},
             {0.05f, 0.5f * kAnkleHeight, 0.12f}, palette.dark);

@@ -6,11 +6,10 @@
 #define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>
 
-#include <glm/gtc/constants.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/gtc/constants.hpp>
 #include <map>
 #include <utility>
 
@@ -130,8 +129,7 @@ Mesh make_sphere(float radius, int slices, int stacks) {
   for (int stack = 1; stack < stacks; ++stack) {
     const float polar = glm::pi<float>() * static_cast<float>(stack) / static_cast<float>(stacks);
     for (int slice = 0; slice < slices; ++slice) {
-      const glm::vec3 direction =
-          around_y(slice, slices) * std::sin(polar) + kUp * std::cos(polar);
+      const glm::vec3 direction = around_y(slice, slices) * std::sin(polar) + kUp * std::cos(polar);
       add_vertex(mesh, radius * direction, direction);
     }
   }
@@ -173,8 +171,7 @@ Mesh make_plane(float size, int divisions) {
   return make_heightfield(size, divisions, [](float, float) { return 0.0f; });
 }
 
-Mesh make_heightfield(float size, int divisions,
-                      const std::function<float(float, float)> &height) {
+Mesh make_heightfield(float size, int divisions, const std::function<float(float, float)> &height) {
   divisions = std::max(divisions, 1);
   const auto height_at = [&height](float x, float z) { return height ? height(x, z) : 0.0f; };
   const float step = size / static_cast<float>(divisions);  // model space, metres per cell
@@ -226,15 +223,13 @@ bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
       for (std::size_t k = 0; k < face_size; ++k) {
         const tinyobj::index_t &corner = shape.mesh.indices[offset + k];
         if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count) {
-          error = path + ": a face uses vertex " +
-                  std::to_string(corner.vertex_index + 1) + " but the file has " +
-                  std::to_string(vertex_count) + " vertices";
+          error = path + ": a face uses vertex " + std::to_string(corner.vertex_index + 1) +
+                  " but the file has " + std::to_string(vertex_count) + " vertices";
           return false;
         }
         if (corner.normal_index >= normal_count) {
-          error = path + ": a face uses normal " +
-                  std::to_string(corner.normal_index + 1) + " but the file has " +
-                  std::to_string(normal_count) + " normals";
+          error = path + ": a face uses normal " + std::to_string(corner.normal_index + 1) +
+                  " but the file has " + std::to_string(normal_count) + " normals";
           return false;
         }
         every_corner_has_normal = every_corner_has_normal && corner.normal_index >= 0;
@@ -279,8 +274,8 @@ bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
     for (const glm::uvec3 &triangle : loaded.triangles) {
       const glm::vec3 &a = loaded.positions[triangle.x];
       // The cross product's length is twice the area: larger faces weigh more.
-      const glm::vec3 face = glm::cross(loaded.positions[triangle.y] - a,
-                                        loaded.positions[triangle.z] - a);
+      const glm::vec3 face =
+          glm::cross(loaded.positions[triangle.y] - a, loaded.positions[triangle.z] - a);
       for (int k = 0; k < 3; ++k) loaded.normals[triangle[k]] += face;
     }
     for (glm::vec3 &normal : loaded.normals) normal = unit_or_up(normal);

@@ -132,8 +132,16 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
                                      view.caster_distance + sphere.radius * 1.01f);
   view.usable = true;
 
+  view.direct_path = options.direct_path;
+  if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
+    view.direct_path = true;
+    view.note = "a " + std::to_string(view.size) + "x" + std::to_string(view.size) +
+                " shadow texture does not fit in the " + std::to_string(scene.width) + "x" +
+                std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
+                "memory directly";
+  }
   // The flat render: 565 red 11110b on 0, no depth test, back faces culled.
-  if (options.direct_path) {
+  if (view.direct_path) {
     glideShimRenderToTexture(GR_TMU0, texture_address, lod_for(view.size));
   }
   const FxU32 side = static_cast<FxU32>(view.size);
@@ -157,7 +165,7 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   for (const glm::uvec3 &t : mesh.triangles) {
     grDrawTriangle(&screen[t.x], &screen[t.y], &screen[t.z]);
   }
-  if (options.direct_path) glideShimRenderToFrameBuffer();
+  if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
   return view;
 }
@@ -171,7 +179,7 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
   // The same 16-bit words, read as ARGB_4444: alpha is the top nibble of the red field.
   // The chroma-key variant reads them as the colour they were drawn in.
   texture.info.format = options.chroma_key ? GR_TEXFMT_RGB_565 : GR_TEXFMT_ARGB_4444;
-  if (options.direct_path) return texture;  // step 1 already wrote texture memory
+  if (view.direct_path) return texture;  // step 1 already wrote texture memory
 
   const auto side = static_cast<FxU32>(view.size);
   std::vector<FxU16> shadow_bitmap(static_cast<std::size_t>(side) * side);  // system memory
@@ -318,6 +326,11 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       auto start = Clock::now();
       job.view = render_caster_from_light(scene, caster, light, options, next_address);  // 1
       finish_step(0, start);
+      if (!job.view.note.empty() &&
+          std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
+              result.warnings.end()) {
+        result.warnings.push_back(job.view.note);
+      }
       if (!job.view.usable) {
         result.warnings.push_back(job.view.problem);
         continue;

@@ -36,8 +36,11 @@ struct LightView {
   float caster_front = 0.0f;        // light-view distance to the caster's nearest bound
   float caster_distance = 0.0f;     // light to the caster's centre
   int size = 256;                   // texels
+  bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
+                                    // in the back buffer; a larger one goes direct)
   bool usable = false;              // false: the light is too close for a clean border
   std::string problem;              // why not, for the user
+  std::string note;                 // a change the user asked for did not get (path fallback)
 };
 
 struct ShadowTexture {

@@ -3,10 +3,9 @@
 // side, four corner posts, three ropes a side and a turnbuckle pad where each rope meets a post.
 #include "ring.h"
 
+#include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-
-#include <cmath>
 
 namespace gs {
 namespace {
@@ -27,7 +26,8 @@ const glm::vec3 kApronColor(0.12f, 0.13f, 0.16f);
 const glm::vec3 kSkirtColor(0.07f, 0.07f, 0.09f);
 const glm::vec3 kStepColor(0.18f, 0.18f, 0.2f);
 const glm::vec3 kPostColor(0.6f, 0.62f, 0.65f);
-const glm::vec3 kRopeColors[3] = {{0.15f, 0.25f, 0.85f}, {0.92f, 0.92f, 0.92f}, {0.85f, 0.1f, 0.1f}};
+const glm::vec3 kRopeColors[3] = {
+    {0.15f, 0.25f, 0.85f}, {0.92f, 0.92f, 0.92f}, {0.85f, 0.1f, 0.1f}};
 const glm::vec3 kRedCorner(0.8f, 0.1f, 0.1f), kBlueCorner(0.1f, 0.2f, 0.8f),
     kNeutralCorner(0.9f, 0.9f, 0.9f);
 
@@ -49,9 +49,9 @@ Mesh make_panel(const glm::vec3 &corner, const glm::vec3 &along, const glm::vec3
   const glm::vec3 normal = glm::normalize(glm::cross(along, across));
   for (int j = 0; j <= across_cells; ++j) {
     for (int i = 0; i <= along_cells; ++i) {
-      panel.positions.push_back(corner +
-                                along * (static_cast<float>(i) / static_cast<float>(along_cells)) +
-                                across * (static_cast<float>(j) / static_cast<float>(across_cells)));
+      panel.positions.push_back(
+          corner + along * (static_cast<float>(i) / static_cast<float>(along_cells)) +
+          across * (static_cast<float>(j) / static_cast<float>(across_cells)));
       panel.normals.push_back(normal);
     }
   }
@@ -88,9 +88,10 @@ Mesh build_ring(const RingSize &size) {
   Mesh ring;
 
   // The canvas: its vertices lie exactly on ring_mat_height, so fighters stand on what is drawn.
-  ring.append(colored(make_heightfield(2.0f * w, kMatDivisions,
-                                       [size](float x, float z) { return ring_mat_height(x, z, size); }),
-                      kMatColor));
+  ring.append(
+      colored(make_heightfield(2.0f * w, kMatDivisions,
+                               [size](float x, float z) { return ring_mat_height(x, z, size); }),
+              kMatColor));
 
   // The apron: four strips around the mat at the platform height, facing +y.
   const glm::vec3 across_z(0.0f, 0.0f, apron - w), full_x(2.0f * apron, 0.0f, 0.0f);
@@ -102,22 +103,28 @@ Mesh build_ring(const RingSize &size) {
 
   // The platform's sides, floor to apron, each facing outwards.
   const glm::vec3 rise(0.0f, top, 0.0f);
-  ring.append(make_panel({-apron, 0.0f, apron}, {2.0f * apron, 0.0f, 0.0f}, rise, 12, 2, kSkirtColor));
-  ring.append(make_panel({apron, 0.0f, -apron}, {-2.0f * apron, 0.0f, 0.0f}, rise, 12, 2, kSkirtColor));
-  ring.append(make_panel({apron, 0.0f, apron}, {0.0f, 0.0f, -2.0f * apron}, rise, 12, 2, kSkirtColor));
-  ring.append(make_panel({-apron, 0.0f, -apron}, {0.0f, 0.0f, 2.0f * apron}, rise, 12, 2, kSkirtColor));
+  ring.append(
+      make_panel({-apron, 0.0f, apron}, {2.0f * apron, 0.0f, 0.0f}, rise, 12, 2, kSkirtColor));
+  ring.append(
+      make_panel({apron, 0.0f, -apron}, {-2.0f * apron, 0.0f, 0.0f}, rise, 12, 2, kSkirtColor));
+  ring.append(
+      make_panel({apron, 0.0f, apron}, {0.0f, 0.0f, -2.0f * apron}, rise, 12, 2, kSkirtColor));
+  ring.append(
+      make_panel({-apron, 0.0f, -apron}, {0.0f, 0.0f, 2.0f * apron}, rise, 12, 2, kSkirtColor));
 
   // Steps against the +x side, tallest first, each a solid block from the floor.
   for (int step = 0; step < kStepCount; ++step) {
     const float step_top = top * static_cast<float>(kStepCount - step) / (kStepCount + 1.0f);
-    const glm::vec3 centre(apron + (static_cast<float>(step) + 0.5f) * kStepDepth, 0.5f * step_top, 0.0f);
+    const glm::vec3 centre(apron + (static_cast<float>(step) + 0.5f) * kStepDepth, 0.5f * step_top,
+                           0.0f);
     ring.append(colored(make_box({0.5f * kStepDepth, 0.5f * step_top, kStepHalfWidth}), kStepColor),
                 glm::translate(glm::mat4(1.0f), centre));
   }
 
   // Corner posts from the floor through the platform; a turnbuckle pad at each rope, on the
   // post's inner side and turned 45 degrees to face the centre.
-  const Mesh post = colored(make_cylinder(kPostRadius, top + kPostTopAboveMat, 16, true), kPostColor);
+  const Mesh post =
+      colored(make_cylinder(kPostRadius, top + kPostTopAboveMat, 16, true), kPostColor);
   for (const float x_side : {-1.0f, 1.0f}) {
     for (const float z_side : {-1.0f, 1.0f}) {
       ring.append(post, glm::translate(glm::mat4(1.0f), {x_side * w, 0.0f, z_side * w}));
@@ -125,7 +132,8 @@ Mesh build_ring(const RingSize &size) {
           x_side == z_side ? (x_side < 0.0f ? kRedCorner : kBlueCorner) : kNeutralCorner;
       const Mesh pad = colored(make_box({0.06f, 0.1f, 0.06f}), pad_color);
       for (const float rope_height : kRopeHeightsAboveMat) {
-        const glm::vec3 centre(x_side * (w - kPostRadius), top + rope_height, z_side * (w - kPostRadius));
+        const glm::vec3 centre(x_side * (w - kPostRadius), top + rope_height,
+                               z_side * (w - kPostRadius));
         ring.append(pad, glm::rotate(glm::translate(glm::mat4(1.0f), centre),
                                      glm::quarter_pi<float>(), glm::vec3(0.0f, 1.0f, 0.0f)));
       }
@@ -136,7 +144,8 @@ Mesh build_ring(const RingSize &size) {
   // cylinder's +y axis turned onto +x for the z sides and onto +z for the x sides.
   for (int rope = 0; rope < 3; ++rope) {
     const float y = top + kRopeHeightsAboveMat[rope];
-    const Mesh cord = colored(make_cylinder(kRopeRadius, 2.0f * w, kRopeSlices, false), kRopeColors[rope]);
+    const Mesh cord =
+        colored(make_cylinder(kRopeRadius, 2.0f * w, kRopeSlices, false), kRopeColors[rope]);
     for (const float side : {-1.0f, 1.0f}) {
       ring.append(cord, glm::rotate(glm::translate(glm::mat4(1.0f), {-w, y, side * w}),
                                     -glm::half_pi<float>(), glm::vec3(0.0f, 0.0f, 1.0f)));

@@ -2,23 +2,24 @@
 // loader, the fighters (triangle budgets, closed parts, standing on y = 0, the LOD's outline, the
 // moves and the fight loop) and the ring (its size, and a mat that is not flat and agrees with
 // ring_mat_height). Test data is read from GLIDESHADOWS_TEST_DATA_DIR.
-#include "fighter.h"
-#include "mesh.h"
-#include "ring.h"
-
-#include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <limits>
 #include <map>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include "fighter.h"
+#include "mesh.h"
+#include "ring.h"
 
 #ifndef GLIDESHADOWS_TEST_DATA_DIR
 #define GLIDESHADOWS_TEST_DATA_DIR "data"
@@ -105,10 +106,10 @@ std::size_t farthest_forward(const Mesh &mesh) {
 }
 
 std::vector<float> joint_angles(const FighterPose &pose) {
-  return {pose.torso_lean,  pose.torso_twist, pose.head_nod,    pose.shoulder[0].x,
+  return {pose.torso_lean,    pose.torso_twist,   pose.head_nod,      pose.shoulder[0].x,
           pose.shoulder[0].y, pose.shoulder[1].x, pose.shoulder[1].y, pose.elbow[0],
-          pose.elbow[1],    pose.hip[0].x,    pose.hip[0].y,    pose.hip[1].x,
-          pose.hip[1].y,    pose.knee[0],     pose.knee[1]};
+          pose.elbow[1],      pose.hip[0].x,      pose.hip[0].y,      pose.hip[1].x,
+          pose.hip[1].y,      pose.knee[0],       pose.knee[1]};
 }
 
 std::vector<float> placement(const FighterPose &pose) {  // metres, model space
@@ -190,7 +191,8 @@ TEST(Shapes, PlaneFacesUp) {
 
 // On a tilted plane y = 0.5 x + 0.25 z the central differences are exact.
 TEST(Shapes, HeightfieldNormalsFollowTheSlope) {
-  const Mesh slope = make_heightfield(2.0f, 4, [](float x, float z) { return 0.5f * x + 0.25f * z; });
+  const Mesh slope =
+      make_heightfield(2.0f, 4, [](float x, float z) { return 0.5f * x + 0.25f * z; });
   const glm::vec3 expected = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.25f));
   for (std::size_t i = 0; i < slope.positions.size(); ++i) {
     const glm::vec3 &p = slope.positions[i];
@@ -204,8 +206,9 @@ TEST(Shapes, HeightfieldNormalsFollowTheSlope) {
 TEST(Shapes, AppendTurnsNormalsByTheInverseTranspose) {
   const float a = 3.0f;
   Mesh ellipsoid;
-  ellipsoid.append(make_sphere(1.0f, 12, 8), glm::mat4(glm::vec4(a, 0, 0, 0), glm::vec4(0, 1, 0, 0),
-                                                       glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 0, 1)));
+  ellipsoid.append(make_sphere(1.0f, 12, 8),
+                   glm::mat4(glm::vec4(a, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0),
+                             glm::vec4(0, 0, 0, 1)));
   for (std::size_t i = 0; i < ellipsoid.positions.size(); ++i) {
     const glm::vec3 &p = ellipsoid.positions[i];
     const glm::vec3 expected = glm::normalize(glm::vec3(p.x / (a * a), p.y, p.z));
@@ -215,8 +218,9 @@ TEST(Shapes, AppendTurnsNormalsByTheInverseTranspose) {
 
 TEST(Shapes, AppendKeepsMirroredShapesWindingOutward) {
   Mesh mirrored;
-  mirrored.append(make_sphere(1.0f, 12, 8), glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
-                                                      glm::vec4(0, 0, 1, 0), glm::vec4(2, 0, 0, 1)));
+  mirrored.append(make_sphere(1.0f, 12, 8),
+                  glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0),
+                            glm::vec4(2, 0, 0, 1)));
   EXPECT_GT(signed_volume(mirrored), 0.0);
   EXPECT_EQ(closed_surface_problem(mirrored), "");
 }
@@ -273,7 +277,9 @@ TEST(LoadObj, FileWithoutTrianglesFails) {
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   Mesh mesh;
   std::string error;
-  EXPECT_FALSE(load_obj(path, mesh, error));
+  const bool loaded = load_obj(path, mesh, error);
+  std::remove(path.c_str());
+  EXPECT_FALSE(loaded);
   EXPECT_NE(error.find(path), std::string::npos) << error;
   EXPECT_TRUE(mesh.positions.empty());
 }
@@ -283,7 +289,9 @@ TEST(LoadObj, KeepsTheFileNormalsAndSplitsPolygons) {
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1 4//1\n";
   Mesh mesh;
   std::string error;
-  ASSERT_TRUE(load_obj(path, mesh, error)) << error;
+  const bool loaded = load_obj(path, mesh, error);
+  std::remove(path.c_str());
+  ASSERT_TRUE(loaded) << error;
   EXPECT_EQ(mesh.positions.size(), 4u);
   EXPECT_EQ(mesh.triangle_count(), 2u);
   for (const glm::vec3 &normal : mesh.normals) EXPECT_EQ(normal, glm::vec3(0.0f, 0.0f, 1.0f));
@@ -342,10 +350,12 @@ TEST(Fighter, DefaultPoseStandsOnTheFloor) {
 
 TEST(Fighter, ColoursSkinBodyAndDarkerGlovesAndFeet) {
   const Mesh fighter = build_fighter(pose_for(Move::Guard, 0.0f), kRed);
-  const auto highest = std::max_element(fighter.positions.begin(), fighter.positions.end(),
-                                        [](const glm::vec3 &a, const glm::vec3 &b) { return a.y < b.y; });
-  const auto lowest = std::min_element(fighter.positions.begin(), fighter.positions.end(),
-                                       [](const glm::vec3 &a, const glm::vec3 &b) { return a.y < b.y; });
+  const auto highest =
+      std::max_element(fighter.positions.begin(), fighter.positions.end(),
+                       [](const glm::vec3 &a, const glm::vec3 &b) { return a.y < b.y; });
+  const auto lowest =
+      std::min_element(fighter.positions.begin(), fighter.positions.end(),
+                       [](const glm::vec3 &a, const glm::vec3 &b) { return a.y < b.y; });
   const glm::vec3 head = fighter.colors[highest - fighter.positions.begin()];
   const glm::vec3 foot = fighter.colors[lowest - fighter.positions.begin()];
   EXPECT_NE(head, kRed);
@@ -416,7 +426,7 @@ TEST(Moves, KickRaisesTheRightFootForward) {
   EXPECT_GT(foot.z, 0.8f);
   EXPECT_LT(foot.x, 0.0f);
   EXPECT_GT(foot.y, 0.5f);
-  EXPECT_GT(lowest_y_on_side(kick, -1.0f), 0.5f);  // the right foot is off the floor
+  EXPECT_GT(lowest_y_on_side(kick, -1.0f), 0.5f);          // the right foot is off the floor
   EXPECT_NEAR(lowest_y_on_side(kick, 1.0f), 0.0f, 1e-4f);  // the left one stands
 }
 
@@ -442,8 +452,10 @@ TEST(Moves, HitReactionLeansBackAndDropsTheArms) {
 
 TEST(Moves, NamesMapToMoves) {
   Move move = Move::Guard;
-  const std::pair<const char *, Move> names[] = {{"guard", Move::Guard}, {"punch", Move::Punch},
-                                                 {"kick", Move::Kick},   {"step", Move::Step},
+  const std::pair<const char *, Move> names[] = {{"guard", Move::Guard},
+                                                 {"punch", Move::Punch},
+                                                 {"kick", Move::Kick},
+                                                 {"step", Move::Step},
                                                  {"hit", Move::HitReaction}};
   for (const auto &[name, expected] : names) {
     EXPECT_TRUE(move_from_name(name, move)) << name;
@@ -562,7 +574,7 @@ TEST(Ring, MatMeetsTheApronAtTheRopes) {
 TEST(Ring, FollowsItsSize) {
   const RingSize size{2.5f, 0.8f};
   const Bounds bounds = bounds_of(build_ring(size));
-  EXPECT_EQ(bounds.low.y, 0.0f);  // the platform stands on the floor
+  EXPECT_EQ(bounds.low.y, 0.0f);                          // the platform stands on the floor
   EXPECT_GT(bounds.high.y, size.platform_height + 1.0f);  // the posts rise above the mat
   EXPECT_NEAR(bounds.high.z, size.mat_half_width + 0.5f, 1e-4f);  // the apron, a bit wider
   EXPECT_NEAR(bounds.low.z, -(size.mat_half_width + 0.5f), 1e-4f);

@@ -1,0 +1,228 @@
+// The projected shadow technique on small scenes whose answer is known: where the shadow must be,
+// where it must not (the caster itself, behind the light, between the light and the caster),
+// the texture's clean border, and the LFB and direct paths giving the same texture.
+#include "context.h"
+#include "fight_scene.h"
+#include "projected_shadow.h"
+
+#include <glide.h>
+#include <glide_shim.h>
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstring>
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+
+class ProjectedShadowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    grGlideInit();
+    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
+    ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                             GR_ORIGIN_UPPER_LEFT, 2, 1));
+    glideShimClearError();
+  }
+  void TearDown() override { grGlideShutdown(); }
+
+  static std::vector<FxU16> back_buffer() {
+    std::vector<FxU16> pixels(kWidth * kHeight);
+    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, pixels.data());
+    return pixels;
+  }
+
+  // Which pixels the technique darkened (white in render_shadow_mask).
+  static std::vector<bool> shadow_mask(const gs::Scene &scene, const gs::ProjectedShadowOptions &options,
+                                       gs::ShadowFrame *out = nullptr) {
+    const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
+    gs::render_shadow_mask(scene, options, frame);
+    std::vector<bool> mask;
+    for (FxU16 p : back_buffer()) mask.push_back(p != 0);
+    if (out != nullptr) *out = frame;
+    return mask;
+  }
+
+  // Pixels where object `index` is the visible surface: the scene drawn with only that object
+  // white and the others black, without shadows.
+  static std::vector<bool> coverage(gs::Scene scene, std::size_t index) {
+    scene.lights.clear();
+    scene.ambient = glm::vec3(1.0f);
+    scene.background = glm::vec3(0.0f);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      scene.objects[i].mesh.set_color(glm::vec3(i == index ? 1.0f : 0.0f));
+    }
+    gs::render_scene(scene, gs::project_scene(scene));
+    std::vector<bool> covered;
+    for (FxU16 p : back_buffer()) covered.push_back(p != 0);
+    return covered;
+  }
+
+  static int count(const std::vector<bool> &a, const std::vector<bool> &b) {
+    int n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] && b[i];
+    return n;
+  }
+
+  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
+    gs::SceneObject o;
+    o.name = name;
+    o.mesh = std::move(mesh);
+    o.model_to_world = glm::translate(glm::mat4(1.0f), at);
+    return o;
+  }
+
+  // A 1 m box 1 m above a 10 m floor, the light straight above, the camera looking down at 45.
+  static gs::Scene box_over_floor() {
+    gs::Scene scene;
+    scene.width = kWidth, scene.height = kHeight;
+    scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
+    scene.objects[0].casts_shadow = false;
+    scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
+    gs::SpotLight light;
+    light.position = {0, 8, 0};
+    light.target = {0, 0, 0};
+    scene.lights.push_back(light);
+    scene.camera.position = {0, 6, 6};
+    scene.camera.target = {0, 0.5f, 0};
+    return scene;
+  }
+};
+
+TEST_F(ProjectedShadowTest, ShadowFallsUnderTheCasterAndNotOnIt) {
+  const gs::Scene scene = box_over_floor();
+  const std::vector<bool> floor = coverage(scene, 0), box = coverage(scene, 1);
+  const std::vector<bool> mask = shadow_mask(scene, {});
+  EXPECT_GT(count(mask, floor), 200) << "no shadow on the floor";
+  EXPECT_EQ(count(mask, box), 0) << "the caster shadows itself";
+  // The shadow is where the box is projected: under it, so around the image's centre column.
+  int left = 0, right = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (mask[static_cast<std::size_t>(y * kWidth + x)]) (x < kWidth / 2 ? left : right)++;
+  EXPECT_NEAR(left, right, 0.2 * (left + right)) << "shadow not centred under the box";
+}
+
+TEST_F(ProjectedShadowTest, ShadowFallsOnAnotherObject) {
+  // The light low on the left: the tall caster's shadow reaches the box on the right.
+  gs::Scene scene = box_over_floor();
+  scene.objects[1] = object("caster", gs::make_box({0.3f, 1.0f, 0.3f}), {-1.0f, 1.0f, 0});
+  scene.objects.push_back(object("receiver", gs::make_box({0.4f, 0.8f, 0.8f}), {1.2f, 0.8f, 0}));
+  scene.objects[2].casts_shadow = false;
+  scene.lights[0].position = {-6.0f, 2.2f, 0};
+  scene.lights[0].target = {1.0f, 0.8f, 0};
+  scene.camera.position = {0, 3, 7};
+  const std::vector<bool> receiver = coverage(scene, 2);
+  const std::vector<bool> mask = shadow_mask(scene, {});
+  // The 0.6 m wide caster leaves a band across the receiver's lit side: a few percent of the
+  // receiver's ~1,000 pixels at the least.
+  EXPECT_GT(count(mask, receiver), 40) << "no shadow on the other object";
+  EXPECT_EQ(count(mask, coverage(scene, 1)), 0) << "the caster shadows itself";
+}
+
+TEST_F(ProjectedShadowTest, NothingBetweenTheLightAndTheCasterIsShadowed) {
+  // A thin plate between the light and the box: it must stay lit; the floor still gets a shadow.
+  gs::Scene scene = box_over_floor();
+  scene.objects.push_back(object("plate", gs::make_box({0.8f, 0.02f, 0.8f}), {0.3f, 3.5f, 0}));
+  scene.objects[2].casts_shadow = false;
+  const std::vector<bool> mask = shadow_mask(scene, {});
+  EXPECT_EQ(count(mask, coverage(scene, 2)), 0) << "receiver between light and caster darkened";
+  EXPECT_GT(count(mask, coverage(scene, 0)), 100);
+}
+
+TEST_F(ProjectedShadowTest, NothingBehindTheLightIsShadowed) {
+  // The light in the middle of the scene, looking right at the caster; a wall behind the light
+  // would get a mirrored shadow if projection behind the light were not removed.
+  gs::Scene scene;
+  scene.width = kWidth, scene.height = kHeight;
+  scene.objects.push_back(object("caster", gs::make_box(glm::vec3(0.4f)), {2.0f, 1.0f, 0}));
+  scene.objects.push_back(object("wall behind", gs::make_box({0.05f, 2.0f, 2.0f}), {-2.0f, 1.0f, 0}));
+  scene.objects.push_back(object("wall beyond", gs::make_box({0.05f, 2.0f, 2.0f}), {4.0f, 1.0f, 0}));
+  scene.objects[1].casts_shadow = scene.objects[2].casts_shadow = false;
+  gs::SpotLight light;
+  light.position = {0.0f, 1.0f, 0};
+  light.target = {2.0f, 1.0f, 0};
+  light.cone_degrees = 170.0f;
+  scene.lights.push_back(light);
+  scene.camera.position = {1.0f, 3.0f, 7.0f};
+  scene.camera.target = {1.0f, 1.0f, 0};
+  const std::vector<bool> mask = shadow_mask(scene, {});
+  EXPECT_EQ(count(mask, coverage(scene, 1)), 0) << "shadow projected behind the light";
+  EXPECT_GT(count(mask, coverage(scene, 2)), 20) << "no shadow on the wall beyond the caster";
+}
+
+TEST_F(ProjectedShadowTest, TextureKeepsACleanBorderInEveryDemoFrame) {
+  gs::FightScene fight(kWidth * 2, kHeight * 2, 128);
+  gs::ProjectedShadowOptions options;
+  options.size = 128;
+  options.direct_path = true;  // the 128 texture does not fit in a 160x120 back buffer
+  for (float time : {0.0f, 1.0f, 2.1f, 4.0f, 5.3f, 7.0f}) {
+    gs::Scene scene = fight.at(time);
+    scene.width = kWidth, scene.height = kHeight;
+    const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
+    ASSERT_EQ(frame.jobs.size(), 2u) << "time " << time;
+    for (const gs::ShadowJob &job : frame.jobs) {
+      const auto *words = reinterpret_cast<const FxU16 *>(glide_shim::current().tmu.memory.data() +
+                                                          job.texture.address);
+      int drawn = 0, border = 0;
+      for (int y = 0; y < 128; ++y) {
+        for (int x = 0; x < 128; ++x) {
+          const bool set = words[y * 128 + x] != 0;
+          drawn += set;
+          border += set && (x < 2 || y < 2 || x >= 126 || y >= 126);
+        }
+      }
+      EXPECT_GT(drawn, 500) << "time " << time << ": caster missing from its texture";
+      EXPECT_EQ(border, 0) << "time " << time << ": caster touches the texture's border";
+    }
+  }
+}
+
+TEST_F(ProjectedShadowTest, LfbAndDirectPathsGiveIdenticalTextures) {
+  gs::FightScene fight(kWidth, kHeight, 64);
+  for (float time : {0.5f, 2.1f, 5.3f}) {
+    const gs::Scene &scene = fight.at(time);
+    std::vector<std::vector<std::uint8_t>> textures[2];
+    for (int direct = 0; direct < 2; ++direct) {
+      gs::ProjectedShadowOptions options;
+      options.size = 64;
+      options.direct_path = direct == 1;
+      const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
+      for (const gs::ShadowJob &job : frame.jobs) {
+        const std::uint8_t *bytes = glide_shim::current().tmu.memory.data() + job.texture.address;
+        textures[direct].emplace_back(bytes, bytes + 64 * 64 * 2);
+      }
+    }
+    ASSERT_EQ(textures[0].size(), 2u);
+    EXPECT_TRUE(textures[0] == textures[1]) << "time " << time;
+  }
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
+}
+
+TEST_F(ProjectedShadowTest, ALightTooCloseToTheCasterIsReportedAndCastsNothing) {
+  gs::Scene scene = box_over_floor();
+  scene.lights[0].position = {0, 2.3f, 0};  // 0.8 m above a box of radius 0.87 m
+  gs::ShadowFrame frame;
+  gs::ProjectedShadowOptions options;
+  options.size = 64;  // fits the back buffer, so the only warning is the one under test
+  const std::vector<bool> mask = shadow_mask(scene, options, &frame);
+  ASSERT_EQ(frame.warnings.size(), 1u);
+  EXPECT_NE(frame.warnings[0].find("too close"), std::string::npos) << frame.warnings[0];
+  EXPECT_EQ(count(mask, coverage(scene, 0)), 0);
+}
+
+TEST_F(ProjectedShadowTest, ChromaKeyVariantShadowsTheSameRegionWithHardEdges) {
+  const gs::Scene scene = box_over_floor();
+  gs::ProjectedShadowOptions chroma;
+  chroma.chroma_key = true;
+  const std::vector<bool> alpha_mask = shadow_mask(scene, {});
+  const std::vector<bool> chroma_mask = shadow_mask(scene, chroma);
+  const int both = count(alpha_mask, chroma_mask);
+  int chroma_count = 0;
+  for (bool b : chroma_mask) chroma_count += b;
+  EXPECT_GT(chroma_count, 200);
+  EXPECT_GE(both, chroma_count * 9 / 10) << "chroma-key shadow outside the alpha one";
+}
+
+}  // namespace
