@@ -127,6 +127,7 @@ void guColorCombineFunction(GrColorCombineFnc_t function) {
       /* DIFF_SPEC_B */ {GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL, GR_COMBINE_FACTOR_LOCAL_ALPHA, GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, FXFALSE},
       /* ONE */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_NONE, GR_COMBINE_OTHER_NONE, FXTRUE},
   };
+  if (!current().require_open("guColorCombineFunction")) return;
   if (function < GR_COLORCOMBINE_ZERO || function > GR_COLORCOMBINE_ONE) {
     current().report(GLIDESHIM_ERR_INVALID_ENUM,
                      "guColorCombineFunction: unknown function " + std::to_string(function));
@@ -137,6 +138,7 @@ void guColorCombineFunction(GrColorCombineFnc_t function) {
 }
 
 void guAlphaSource(GrAlphaSource_t mode) {
+  if (!current().require_open("guAlphaSource")) return;
   switch (mode) {
     case GR_ALPHASOURCE_CC_ALPHA:
       grAlphaCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
@@ -179,6 +181,13 @@ void guTexCombineFunction(GrChipID_t tmu, GrTextureCombineFnc_t function) {
       /* TRILINEAR_EVEN */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_LOD_FRACTION, FXFALSE},
       /* ONE */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, FXTRUE},
   };
+  auto &ctx = current();
+  if (!ctx.require_open("guTexCombineFunction")) return;
+  if (tmu != GR_TMU0) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               "guTexCombineFunction: TMU " + std::to_string(tmu) + " does not exist (one TMU)");
+    return;
+  }
   if (function < GR_TEXTURECOMBINE_ZERO || function > GR_TEXTURECOMBINE_ONE) {
     current().report(GLIDESHIM_ERR_INVALID_ENUM,
                      "guTexCombineFunction: unknown function " + std::to_string(function));

@@ -13,7 +13,9 @@ bool is_w_buffer(GrDepthBufferMode_t mode) {
 }
 
 FxU16 w_code(double oow) {
-  if (!(oow < 1.0)) return 0;
+  // 1/w >= 1 saturates to the nearest code; so does a negative 1/w (w behind the eye), whose
+  // integer bits are set in the hardware's iterator.
+  if (!(oow < 1.0) || oow < 0.0) return 0;
   const auto fixed = static_cast<std::uint64_t>(std::max(0.0, oow) * 4294967296.0);  // .32
   const auto top = static_cast<unsigned>(fixed >> 16);
   if (top == 0) return 0xFFFF;

@@ -93,6 +93,14 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
     return FXFALSE;
   }
   const bool reading = access == GR_LFB_READ_ONLY;
+  const bool defined_write_mode = (writeMode >= GR_LFBWRITEMODE_565 && writeMode <= GR_LFBWRITEMODE_1555) ||
+                                  writeMode == GR_LFBWRITEMODE_888 || writeMode == GR_LFBWRITEMODE_8888 ||
+                                  (writeMode >= GR_LFBWRITEMODE_565_DEPTH && writeMode <= GR_LFBWRITEMODE_ZA16) ||
+                                  writeMode == GR_LFBWRITEMODE_ANY;
+  if (!reading && !defined_write_mode) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grLfbLock: unknown write mode " + std::to_string(writeMode));
+    return FXFALSE;
+  }
   if (reading ? ctx.lfb.read_locked : ctx.lfb.write_locked) {
     ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbLock: this lock type is already held");
     return FXFALSE;
@@ -200,9 +208,17 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
     case GR_LFB_SRC_FMT_1555: bytes_per_pixel = 2; break;
     case GR_LFB_SRC_FMT_888:
     case GR_LFB_SRC_FMT_8888: bytes_per_pixel = 4; break;
-    default:
+    case GR_LFB_SRC_FMT_565_DEPTH:
+    case GR_LFB_SRC_FMT_555_DEPTH:
+    case GR_LFB_SRC_FMT_1555_DEPTH:
+    case GR_LFB_SRC_FMT_ZA16:
+    case GR_LFB_SRC_FMT_RLE16:
       ctx.report(GLIDESHIM_ERR_UNSUPPORTED, "grLfbWriteRegion: source format " +
-                                                std::to_string(src_format) + " is not implemented");
+                                                std::to_string(src_format) + " is not implemented yet");
+      return FXFALSE;
+    default:
+      ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grLfbWriteRegion: unknown source format " +
+                                                 std::to_string(src_format));
       return FXFALSE;
   }
   if (src_data == nullptr) {

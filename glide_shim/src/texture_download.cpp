@@ -63,29 +63,23 @@ void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTe
                                                " is not 8-byte aligned");
     return;
   }
-  // GrTexInfo.data holds every level largest first; copy the ones evenOdd selects.
+  // GrTexInfo.data packs every level largest first at its plain texel count; TMU memory holds
+  // the levels evenOdd selects at their SST-1 footprints (texture_layout.h), so copy by level.
   const auto *source = static_cast<const std::uint8_t *>(info->data);
-  const FxU32 total = glide_shim::level_offset(info->smallLod + 1, info->largeLod,
-                                               info->aspectRatio, info->format,
-                                               GR_MIPMAPLEVELMASK_BOTH);
   const FxU32 stored = glide_shim::mipmap_bytes(info->smallLod, info->largeLod,
                                                 info->aspectRatio, info->format, evenOdd);
   if (!fits_in_memory("grTexDownloadMipMap", startAddress, stored)) return;
-  if (evenOdd == GR_MIPMAPLEVELMASK_BOTH) {
-    write_memory(startAddress, source, total);
-    return;
-  }
+  FxU32 from = 0;
   for (GrLOD_t lod = info->largeLod; lod <= info->smallLod; ++lod) {
-    const FxU32 from = glide_shim::level_offset(lod, info->largeLod, info->aspectRatio,
-                                                info->format, GR_MIPMAPLEVELMASK_BOTH);
-    const FxU32 to = glide_shim::level_offset(lod, info->largeLod, info->aspectRatio,
-                                              info->format, evenOdd);
-    const FxU32 next = glide_shim::level_offset(lod + 1, info->largeLod, info->aspectRatio,
-                                                info->format, GR_MIPMAPLEVELMASK_BOTH);
-    const bool even = lod % 2 == 0;
-    if (even == (evenOdd == GR_MIPMAPLEVELMASK_EVEN)) {
-      write_memory(startAddress + to, source + from, next - from);
+    const glide_shim::LevelSize size = glide_shim::level_size(lod, info->aspectRatio);
+    const auto bytes = static_cast<FxU32>(size.width * size.height *
+                                          glide_shim::bytes_per_texel(info->format));
+    if (glide_shim::level_selected(lod, evenOdd)) {
+      const FxU32 to = glide_shim::level_offset(lod, info->largeLod, info->aspectRatio,
+                                                info->format, evenOdd);
+      write_memory(startAddress + to, source + from, bytes);
     }
+    from += bytes;
   }
 }
 

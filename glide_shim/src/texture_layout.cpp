@@ -47,15 +47,28 @@ LevelSize level_size(GrLOD_t lod, GrAspectRatio_t aspect) {
   return {shorter, longer};
 }
 
-namespace {
 bool level_selected(GrLOD_t lod, FxU32 even_odd) {
   if (even_odd == GR_MIPMAPLEVELMASK_BOTH) return true;
   const bool even = (lod % 2) == 0;
   return even == (even_odd == GR_MIPMAPLEVELMASK_EVEN);
 }
+
+namespace {
+// Texels a level occupies in TMU memory: SST-1 Glide's _grMipMapSize table (ditex.c), indexed
+// by |aspect - 1x1| (1x8 takes as much as 8x1) and LOD. Narrow small levels are padded, and no
+// level holds fewer than 4 texels, so this is not always width x height.
+int level_footprint(GrLOD_t lod, GrAspectRatio_t aspect) {
+  static const int kFootprint[4][9] = {
+      {65536, 16384, 4096, 1024, 256, 64, 16, 4, 4},  // 1:1
+      {32768, 8192, 2048, 512, 128, 32, 8, 4, 4},     // 2:1
+      {16384, 4096, 1024, 256, 64, 16, 8, 4, 4},      // 4:1
+      {8192, 2048, 512, 128, 32, 16, 8, 4, 4},        // 8:1
+  };
+  return kFootprint[std::abs(static_cast<int>(aspect) - GR_ASPECT_1x1)][lod];
+}
+
 FxU32 level_bytes(GrLOD_t lod, GrAspectRatio_t aspect, GrTextureFormat_t format) {
-  const LevelSize size = level_size(lod, aspect);
-  return static_cast<FxU32>(size.width * size.height * bytes_per_texel(format));
+  return static_cast<FxU32>(level_footprint(lod, aspect) * bytes_per_texel(format));
 }
 }  // namespace
 

@@ -1,5 +1,6 @@
 // How Glide lays out a texture in TMU memory: level sizes from LOD and aspect, bytes per texel
-// by format, and where each level of a mip-map chain starts (largest level first).
+// by format, and where each level of a mip-map chain starts (largest level first). Levels take
+// their SST-1 footprint in memory, which pads narrow small levels (see level_footprint).
 #pragma once
 
 #include <glide.h>
@@ -19,6 +20,7 @@ bool is_decodable_format(GrTextureFormat_t format);  // the ones this shim can s
 bool is_even_odd(FxU32 even_odd);
 
 int bytes_per_texel(GrTextureFormat_t format);
+bool level_selected(GrLOD_t lod, FxU32 even_odd);  // by GR_MIPMAPLEVELMASK_EVEN/ODD/BOTH
 LevelSize level_size(GrLOD_t lod, GrAspectRatio_t aspect);
 // Bytes of the levels large_lod..small_lod that `even_odd` selects, rounded up to 8 bytes.
 FxU32 mipmap_bytes(GrLOD_t small_lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
