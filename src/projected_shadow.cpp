@@ -66,6 +66,30 @@ glm::vec3 shadow_stq(const LightView &view, const glm::vec3 &world) {
           clip.w};
 }
 
+// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can see
+// any occupied cell of the texture. Its projection is convex, so its bounding box bounds it;
+// one texel of margin covers bilinear filtering's reach.
+bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+  const float cell = static_cast<float>(view.size) / LightView::kCells;
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
+  const int x1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
+  const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (view.occupied[static_cast<std::size_t>(y * LightView::kCells + x)]) return true;
+    }
+  }
+  return false;
+}
+
 float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
                    ShadowAlpha mode) {
   float alpha = light.shadow_strength * 255.0f;
@@ -162,8 +186,21 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   for (std::size_t i = 0; i < screen.size(); ++i) {
     screen[i] = to_screen(light_clip * glm::vec4(mesh.positions[i], 1.0f), view.size, view.size);
   }
+  const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
+  auto cell_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
+  };
   for (const glm::uvec3 &t : mesh.triangles) {
     grDrawTriangle(&screen[t.x], &screen[t.y], &screen[t.z]);
+    const float x0 = std::min({screen[t.x].x, screen[t.y].x, screen[t.z].x});
+    const float x1 = std::max({screen[t.x].x, screen[t.y].x, screen[t.z].x});
+    const float y0 = std::min({screen[t.x].y, screen[t.y].y, screen[t.z].y});
+    const float y1 = std::max({screen[t.x].y, screen[t.y].y, screen[t.z].y});
+    for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
+      for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
+        view.occupied[static_cast<std::size_t>(cy * LightView::kCells + cx)] = true;
+      }
+    }
   }
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
@@ -216,7 +253,12 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
       if ((flags[t.x] & flags[t.y] & flags[t.z]) != 0) continue;
-      const bool exact = ((flags[t.x] | flags[t.y] | flags[t.z]) & 0x10) == 0 &&
+      const bool in_front = ((flags[t.x] | flags[t.y] | flags[t.z]) & 0x10) != 0;
+      if (!in_front) {
+        const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
+        if (!sees_caster(view, corners, 3)) continue;
+      }
+      const bool exact = !in_front &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
       if (exact) {
         ShadowTriangle triangle;
@@ -234,6 +276,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       }
       clip_polygon(polygon, in_front_of_caster, scratch);
       if (polygon.size() < 3) continue;
+      std::vector<glm::vec4> corners;
+      for (const ClipVertex &v : polygon) corners.push_back(view.projection * v.clip);
+      if (!sees_caster(view, corners.data(), corners.size())) continue;
       std::vector<GrVertex> screen;
       project_camera_polygon(frame, scene, polygon, scratch, screen);
       for (std::size_t i = 0; i < screen.size(); ++i) {

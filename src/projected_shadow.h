@@ -41,6 +41,11 @@ struct LightView {
   bool usable = false;              // false: the light is too close for a clean border
   std::string problem;              // why not, for the user
   std::string note;                 // a change the user asked for did not get (path fallback)
+  // Which 16x16 cells of the texture the caster's triangles touch (a bounding-box cover, so
+  // conservative): step 3 skips receiver triangles that see only empty cells, where step 5
+  // would blend alpha 0 and change nothing.
+  static constexpr int kCells = 16;
+  std::vector<bool> occupied = std::vector<bool>(kCells * kCells, false);
 };
 
 struct ShadowTexture {

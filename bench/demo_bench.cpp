@@ -1,0 +1,117 @@
+// demo_bench: what the projected shadows cost in the fighter demo at 640x480 with 256x256
+// textures. Same run, same frames: the frame without shadows, with them through the LFB path and
+// through the direct (render-to-texture) path; the five step times; frames per second without
+// PNG writing; peak memory. Medians of repeats after a warm-up (llvmpipe compiles each new state
+// on its first draw).
+#include "fight_scene.h"
+#include "projected_shadow.h"
+
+#include <glide.h>
+#include <glide_shim.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  int frames = 40;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0) {
+      std::printf("usage: demo_bench [--frames N]\nTimes N frames of the fighter demo at 640x480, "
+                  "256x256 shadows: without shadows, LFB path, direct path (median ms per frame),\n"
+                  "the five steps, frames per second and peak memory.\n");
+      return 0;
+    }
+    if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
+      frames = std::max(4, std::atoi(argv[++i]));
+    } else {
+      std::fprintf(stderr, "demo_bench: unknown argument '%s' (see --help)\n", argv[i]);
+      return 2;
+    }
+  }
+  grGlideInit();
+  if (!grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                    GR_ORIGIN_UPPER_LEFT, 2, 1)) {
+    std::fprintf(stderr, "demo_bench: %s\n", glideShimGetLastErrorMessage());
+    return 1;
+  }
+  gs::FightScene fight(640, 480, 256);
+  gs::ProjectedShadowOptions lfb, direct;
+  direct.direct_path = true;
+
+  enum Mode { kNone, kLfb, kDirect };
+  const char *names[3] = {"no shadows", "shadows, LFB path", "shadows, direct path"};
+  std::vector<double> frame_ms[3];
+  std::vector<gs::StepTimes> steps;
+  // Warm-up: every mode once, so llvmpipe's shader compiles are out of the measurement.
+  for (int mode = 0; mode < 3; ++mode) {
+    const gs::Scene &scene = fight.at(0.0f);
+    if (mode == kNone) gs::render_scene(scene, gs::project_scene(scene));
+    else gs::render_projected_shadows(scene, mode == kLfb ? lfb : direct, false);
+    grBufferSwap(0);
+  }
+  // Modes interleaved frame by frame, so machine noise falls on all three alike.
+  for (int i = 0; i < frames; ++i) {
+    const gs::Scene &scene = fight.at(static_cast<float>(i) / 30.0f);
+    for (int mode = 0; mode < 3; ++mode) {
+      const auto start = Clock::now();
+      if (mode == kNone) gs::render_scene(scene, gs::project_scene(scene));
+      else gs::render_projected_shadows(scene, mode == kLfb ? lfb : direct, false);
+      grSstIdle();
+      frame_ms[mode].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      grBufferSwap(0);
+    }
+  }
+  // Step times need a synchronising idle after each step, which slows the frame a little.
+  for (int i = 0; i < frames; ++i) {
+    steps.push_back(gs::render_projected_shadows(fight.at(static_cast<float>(i) / 30.0f), lfb, true).times);
+    grBufferSwap(0);
+  }
+  grGlideShutdown();
+
+  std::printf("demo_bench: fighter demo, 640x480, 256x256 shadow textures, %d frames, %s backend\n",
+              frames, "osmesa/egl per GLIDESHIM_BACKEND");
+  const double none = median(frame_ms[kNone]);
+  for (int mode = 0; mode < 3; ++mode) {
+    const double ms = median(frame_ms[mode]);
+    std::printf("  %-22s %7.2f ms  %6.1f frames/s  ratio to no shadows %.2f\n", names[mode], ms,
+                1000.0 / ms, ms / none);
+  }
+  std::printf("  LFB path / direct path %7.2f       (target within 1.10)\n",
+              median(frame_ms[kLfb]) / median(frame_ms[kDirect]));
+  std::printf("  shadows / no shadows   %7.2f       (target at most 1.30)\n",
+              median(frame_ms[kLfb]) / none);
+  const char *step_names[5] = {"1 caster from the light", "2 LFB read + 4444 download",
+                               "3 (s,t) for the receivers", "4 the scene", "5 shadow pass"};
+  std::vector<double> totals;
+  for (const gs::StepTimes &t : steps) totals.push_back(t.total_ms);
+  const double total = median(totals);
+  std::printf("  steps (synchronised frame %.2f ms):\n", total);
+  for (int s = 0; s < 5; ++s) {
+    std::vector<double> v;
+    for (const gs::StepTimes &t : steps) v.push_back(t.ms[s]);
+    std::printf("    step %-28s %6.2f ms  %5.1f%%\n", step_names[s], median(v), 100.0 * median(v) / total);
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("  peak memory            %7.1f MB   (target under 200)\n",
+              static_cast<double>(usage.ru_maxrss) / 1024.0);
+  return 0;
+}
