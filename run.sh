@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine: installs the Debian packages the project needs
 # (only the missing ones), configures and builds in Release, then runs the job asked for.
-#   ./run.sh demo    build, then render the sample Glide program and say where the PNG is
+#   ./run.sh demo    build, then render the fighter demo (PNG frames, contact sheet, GIF, timing)
 #   ./run.sh test    build, then run the whole test suite (ctest)
 #   ./run.sh bench   build, then run the benchmark programs
 set -euo pipefail
@@ -53,9 +53,9 @@ export MESA_SHADER_CACHE_DISABLE=${MESA_SHADER_CACHE_DISABLE:-true}
 case "${1:-}" in
   demo)
     build
-    mkdir -p out
-    ./build/demo/hello_glide out/hello_glide.png
-    echo "run.sh: the frame is out/hello_glide.png"
+    shift
+    ./build/src/glideshadows demo --frames 96 --out out/demo --contact-sheet --gif "$@"
+    echo "run.sh: frames in out/demo/ (frame_NNNN.png), out/demo/contact_sheet.png, out/demo/fight.gif"
     ;;
   test)
     build
@@ -64,6 +64,7 @@ case "${1:-}" in
   bench)
     build
     ./build/bench/shim_bench
+    ./build/bench/demo_bench
     ;;
   -h|--help|help)
     usage

@@ -66,12 +66,15 @@ glm::vec3 shadow_stq(const LightView &view, const glm::vec3 &world) {
           clip.w};
 }
 
-// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can see
-// any occupied cell of the texture. Its projection is convex, so its bounding box bounds it;
-// one texel of margin covers bilinear filtering's reach.
+// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
+// the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
+// its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
+// beyond the caster's nearest point in that cell.
 bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
   glm::vec2 low(INFINITY), high(-INFINITY);
+  float farthest = 0.0f;
   for (std::size_t i = 0; i < count; ++i) {
+    farthest = std::max(farthest, light_clip[i].w);
     const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
                           0.5f) * static_cast<float>(view.size);  // texels
     low = glm::min(low, uv);
@@ -84,7 +87,8 @@ bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t
   const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
-      if (view.occupied[static_cast<std::size_t>(y * LightView::kCells + x)]) return true;
+      const auto index = static_cast<std::size_t>(y * LightView::kCells + x);
+      if (view.occupied[index] && farthest > view.nearest[index]) return true;
     }
   }
   return false;
@@ -183,8 +187,11 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   const glm::mat4 light_clip = view.projection * view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> screen(mesh.positions.size());
+  std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
   for (std::size_t i = 0; i < screen.size(); ++i) {
-    screen[i] = to_screen(light_clip * glm::vec4(mesh.positions[i], 1.0f), view.size, view.size);
+    const glm::vec4 clip = light_clip * glm::vec4(mesh.positions[i], 1.0f);
+    screen[i] = to_screen(clip, view.size, view.size);
+    depth[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
   auto cell_index = [&](float texels) {
@@ -196,9 +203,12 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
     const float x1 = std::max({screen[t.x].x, screen[t.y].x, screen[t.z].x});
     const float y0 = std::min({screen[t.x].y, screen[t.y].y, screen[t.z].y});
     const float y1 = std::max({screen[t.x].y, screen[t.y].y, screen[t.z].y});
+    const float nearest = std::min({depth[t.x], depth[t.y], depth[t.z]});
     for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
       for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
-        view.occupied[static_cast<std::size_t>(cy * LightView::kCells + cx)] = true;
+        const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
+        view.occupied[cell_at] = true;
+        view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
       }
     }
   }

@@ -9,6 +9,7 @@
 
 #include <glide.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -44,8 +45,11 @@ struct LightView {
   // Which 16x16 cells of the texture the caster's triangles touch (a bounding-box cover, so
   // conservative): step 3 skips receiver triangles that see only empty cells, where step 5
   // would blend alpha 0 and change nothing.
+  // Per cell also the caster's nearest light-view depth (w): a receiver wholly nearer the light
+  // than that, in every cell it sees, lies between the light and the caster and stays lit.
   static constexpr int kCells = 16;
   std::vector<bool> occupied = std::vector<bool>(kCells * kCells, false);
+  std::vector<float> nearest = std::vector<float>(kCells * kCells, INFINITY);
 };
 
 struct ShadowTexture {

@@ -37,6 +37,18 @@ TEST(SampleProgram, ArticlePortRendersItsShadow) {
   EXPECT_TRUE(matches_reference("article_port", png, kAcrossCpus));
 }
 
+TEST(FightDemo, FramesMatchTheirReferences) {
+  // Two moments of the fight (guard, and the red fighter's punch) at 320x240, run through the
+  // command-line tool exactly as a user would.
+  const std::filesystem::path dir = std::filesystem::path(output_path("fight"));
+  std::filesystem::remove_all(dir);
+  const std::string command = std::string(GLIDESHADOWS_PATH) + " demo --frames 64 --fps 30 --size 320x240 --out " +
+                              dir.string() + " --shadow-size 128 > /dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  EXPECT_TRUE(matches_reference("fight_frame_0010", (dir / "frame_0010.png").string(), kAcrossCpus));
+  EXPECT_TRUE(matches_reference("fight_frame_0063", (dir / "frame_0063.png").string(), kAcrossCpus));
+}
+
 TEST(SampleProgram, RunsAreByteIdentical) {
   const std::string first = output_path("determinism_1.png"), second = output_path("determinism_2.png");
   for (const std::string &png : {first, second}) {

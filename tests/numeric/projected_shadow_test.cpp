@@ -14,7 +14,7 @@
 
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kWidth = 320, kHeight = 240;
 
 class ProjectedShadowTest : public ::testing::Test {
  protected:
@@ -153,13 +153,11 @@ TEST_F(ProjectedShadowTest, NothingBehindTheLightIsShadowed) {
 }
 
 TEST_F(ProjectedShadowTest, TextureKeepsACleanBorderInEveryDemoFrame) {
-  gs::FightScene fight(kWidth * 2, kHeight * 2, 128);
+  gs::FightScene fight(kWidth, kHeight, 128);
   gs::ProjectedShadowOptions options;
   options.size = 128;
-  options.direct_path = true;  // the 128 texture does not fit in a 160x120 back buffer
   for (float time : {0.0f, 1.0f, 2.1f, 4.0f, 5.3f, 7.0f}) {
-    gs::Scene scene = fight.at(time);
-    scene.width = kWidth, scene.height = kHeight;
+    const gs::Scene &scene = fight.at(time);
     const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
     ASSERT_EQ(frame.jobs.size(), 2u) << "time " << time;
     for (const gs::ShadowJob &job : frame.jobs) {
@@ -223,6 +221,38 @@ TEST_F(ProjectedShadowTest, ChromaKeyVariantShadowsTheSameRegionWithHardEdges) {
   for (bool b : chroma_mask) chroma_count += b;
   EXPECT_GT(chroma_count, 200);
   EXPECT_GE(both, chroma_count * 9 / 10) << "chroma-key shadow outside the alpha one";
+}
+
+TEST_F(ProjectedShadowTest, FightersShadowTheRingAndEachOther) {
+  // The light is low behind the red fighter: its shadow must reach the blue one.
+  gs::FightScene fight(kWidth, kHeight, 128);
+  gs::ProjectedShadowOptions options;
+  options.size = 128;
+  for (float time : {0.0f, 2.1f, 5.3f}) {
+    const gs::Scene &scene = fight.at(time);
+    const std::vector<bool> mask = shadow_mask(scene, options);
+    EXPECT_GT(count(mask, coverage(scene, gs::FightScene::kRing)), 200)
+        << "time " << time << ": no shadow on the ring";
+    EXPECT_GT(count(mask, coverage(scene, gs::FightScene::kFighters[1])), 20)
+        << "time " << time << ": red's shadow misses blue";
+  }
+}
+
+TEST_F(ProjectedShadowTest, FighterNearerTheLightGetsNoShadowFromTheOther) {
+  // Blue's shadow falls away from red, which stands between blue and the light. Step 3 keeps
+  // receivers beyond the caster's nearest depth per 16-texel cell; at the instants the fighters
+  // touch (red's punch landing at 2.1 s) that cell test cannot separate the fist from blue's
+  // nearest point, and the article's technique has no per-pixel depth test, so those instants
+  // are left to the accuracy measurements against ground truth.
+  gs::FightScene fight(kWidth, kHeight, 128);
+  gs::ProjectedShadowOptions options;
+  options.size = 128;
+  for (float time : {0.0f, 1.0f, 5.3f, 7.0f}) {
+    const gs::Scene &scene = fight.at(time);
+    const std::vector<bool> mask = shadow_mask(scene, options);
+    EXPECT_EQ(count(mask, coverage(scene, gs::FightScene::kFighters[0])), 0)
+        << "time " << time << ": shadow on the red fighter";
+  }
 }
 
 }  // namespace
