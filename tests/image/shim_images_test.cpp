@@ -49,6 +49,38 @@ TEST(FightDemo, FramesMatchTheirReferences) {
   EXPECT_TRUE(matches_reference("fight_frame_0063", (dir / "frame_0063.png").string(), kAcrossCpus));
 }
 
+TEST(SceneFiles, EverySampleSceneRendersWithItsMask) {
+  // `glideshadows render` on each file in scenes/, as a user would run it.
+  int scenes = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    ++scenes;
+    const std::string stem = entry.path().stem().string();
+    const std::string png = output_path("scene_" + stem + ".png"), mask = output_path("scene_" + stem + "_mask.png");
+    std::remove(png.c_str());
+    std::remove(mask.c_str());
+    const std::string command = std::string(GLIDESHADOWS_PATH) + " render " + entry.path().string() +
+                                " --out " + png + " --mask " + mask + " > /dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    EXPECT_TRUE(std::filesystem::exists(png) && std::filesystem::exists(mask)) << stem;
+  }
+  EXPECT_GE(scenes, 4);
+}
+
+TEST(SceneFiles, ABadSceneIsRefusedWithTheFieldNamed) {
+  const std::string bad = output_path("bad_scene.json");
+  std::FILE *file = std::fopen(bad.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  std::fputs("{\"camera\": {\"position\": [0, 1, 5], \"target\": [0, 0, 0]},"
+             " \"objects\": [{\"mesh\": {\"shape\": \"cube\"}}]}", file);
+  std::fclose(file);
+  const std::string log = output_path("bad_scene.log");
+  const std::string command = std::string(GLIDESHADOWS_PATH) + " render " + bad + " --out " +
+                              output_path("bad_scene.png") + " 2> " + log;
+  EXPECT_NE(std::system(command.c_str()), 0);
+  EXPECT_NE(file_bytes(log).find("objects[0].mesh.shape"), std::string::npos) << file_bytes(log);
+}
+
 TEST(SampleProgram, RunsAreByteIdentical) {
   const std::string first = output_path("determinism_1.png"), second = output_path("determinism_2.png");
   for (const std::string &png : {first, second}) {
