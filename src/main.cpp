@@ -35,8 +35,8 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
       ->check(CLI::IsMember(kTechniques))
       ->capture_default_str();
   command.add_option("--shadow-size", shadow_size,
-                     "shadow texture side in texels (32..256: a Voodoo 1 texture)")
-      ->check(CLI::IsMember({32, 64, 128, 256}))
+                     "shadow map side in texels; 512 is drawn as four 256x256 textures (a Voodoo 1 limit)")
+      ->check(CLI::IsMember({32, 64, 128, 256, 512}))
       ->capture_default_str();
   command.add_flag("--direct-path", choice.direct_path,
                    "step 1 renders straight into texture memory instead of the back buffer + LFB read");
@@ -87,13 +87,14 @@ gs::ShadowFrame render_frame(const gs::Scene &scene, const TechniqueChoice &choi
 }
 
 bool check_lfb_fits(const TechniqueChoice &choice, int shadow_size, int width, int height) {
-  if (choice.direct_path || choice.name == "none" || (shadow_size <= width && shadow_size <= height)) {
+  const int texture = std::min(shadow_size, 256);  // larger maps are drawn as 256x256 tiles
+  if (choice.direct_path || choice.name == "none" || (texture <= width && texture <= height)) {
     return true;
   }
   std::fprintf(stderr,
                "glideshadows: a %dx%d shadow texture does not fit in the %dx%d back buffer that "
                "step 1 draws into; use a larger --size or --direct-path\n",
-               shadow_size, shadow_size, width, height);
+               texture, texture, width, height);
   return false;
 }
 
@@ -301,7 +302,7 @@ int main(int argc, char **argv) {
   render->add_option("--mask", mask, "also write the shadow mask PNG (white: darkened by the technique)");
   add_technique_options(*render, render_choice, render_shadow_size);
   render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
-  render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256}));
+  render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256, 512}));
 
   CLI11_PARSE(app, argc, argv);
   if (demo->parsed()) {

@@ -55,7 +55,7 @@ int screen_size_texture(const Scene &scene, const Sphere &caster) {
   const float half_height = std::tan(glm::radians(scene.camera.fov_degrees) * 0.5f) * distance;
   const float diameter_pixels = caster.radius / half_height * static_cast<float>(scene.height);
   int size = 32;
-  while (size < 256 && static_cast<float>(size) < diameter_pixels) size *= 2;
+  while (size < 512 && static_cast<float>(size) < diameter_pixels) size *= 2;
   return size;
 }
 
@@ -129,8 +129,8 @@ double elapsed_ms(Clock::time_point start) {
 
 }  // namespace
 
-LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::size_t light_index,
-                                   const ProjectedShadowOptions &options, FxU32 texture_address) {
+LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light_index,
+                         const ProjectedShadowOptions &options) {
   const SceneObject &object = scene.objects[caster];
   const SpotLight &light = scene.lights[light_index];
   const Sphere sphere = bounding_sphere(object);
@@ -145,7 +145,7 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   const float sine = sphere.radius / std::max(view.caster_distance, 1e-6f);
   const float half_fov = sine < 1.0f ? std::atan(std::tan(std::asin(sine)) / usable) : INFINITY;
   if (!(half_fov < glm::radians(80.0f))) {
-    view.problem = "light '" + std::to_string(light_index) + "' is too close to '" + object.name +
+    view.problem = "light " + std::to_string(light_index) + " is too close to '" + object.name +
                    "' (" + std::to_string(view.caster_distance) + " m from a caster of radius " +
                    std::to_string(sphere.radius) +
                    " m): no view keeps a clean border, so it casts no shadow";
@@ -159,7 +159,35 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   view.projection = glm::perspective(2.0f * half_fov, 1.0f, near_plane,
                                      view.caster_distance + sphere.radius * 1.01f);
   view.usable = true;
+  return view;
+}
 
+std::vector<LightView> split_into_textures(const LightView &view) {
+  constexpr int kLargest = 256;  // GR_LOD_256
+  if (view.size <= kLargest) return {view};
+  const int tiles = view.size / kLargest;  // per side
+  std::vector<LightView> parts;
+  for (int ty = 0; ty < tiles; ++ty) {
+    for (int tx = 0; tx < tiles; ++tx) {
+      // Light clip space remapped so this tile's square of NDC becomes [-1, 1]^2 (rows from the
+      // top, as texture rows run): x' = tiles x + (tiles - 1 - 2 tx) w, likewise y.
+      glm::mat4 remap(1.0f);
+      remap[0][0] = remap[1][1] = static_cast<float>(tiles);
+      remap[3][0] = static_cast<float>(tiles - 1 - 2 * tx);
+      remap[3][1] = -static_cast<float>(tiles - 1 - 2 * ty);
+      LightView part = view;
+      part.projection = remap * view.projection;
+      part.size = kLargest;
+      part.clip_to_view = true;
+      parts.push_back(part);
+    }
+  }
+  return parts;
+}
+
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address) {
+  const SceneObject &object = scene.objects[caster];
   view.direct_path = options.direct_path;
   if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
     view.direct_path = true;
@@ -198,7 +226,7 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
     return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
   };
   for (const glm::uvec3 &t : mesh.triangles) {
-    grDrawTriangle(&screen[t.x], &screen[t.y], &screen[t.z]);
+    guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
     const float x0 = std::min({screen[t.x].x, screen[t.y].x, screen[t.z].x});
     const float x1 = std::max({screen[t.x].x, screen[t.y].x, screen[t.z].x});
     const float y0 = std::min({screen[t.x].y, screen[t.y].y, screen[t.z].y});
@@ -214,7 +242,6 @@ LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::
   }
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
-  return view;
 }
 
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
@@ -244,7 +271,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
   // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
-  const glm::vec4 in_front_of_caster{0.0f, 0.0f, -1.0f, -view.caster_front};
+  std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
+  if (view.clip_to_view) {
+    // A tile's sides as light-view planes: a clip-space plane p is transpose(P) p in view space.
+    for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, 1), glm::vec4(1, 0, 0, 1),
+                                  glm::vec4(0, -1, 0, 1), glm::vec4(0, 1, 0, 1)}) {
+      view_planes.push_back(glm::transpose(view.projection) * side);
+    }
+  }
   std::vector<ClipVertex> polygon, scratch;
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
@@ -263,12 +297,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
       if ((flags[t.x] & flags[t.y] & flags[t.z]) != 0) continue;
-      const bool in_front = ((flags[t.x] | flags[t.y] | flags[t.z]) & 0x10) != 0;
-      if (!in_front) {
+      const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
+      const bool in_front = (any_outside & 0x10) != 0;
+      const bool needs_clip = in_front || (view.clip_to_view && (any_outside & 0xF) != 0);
+      if (!needs_clip) {
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         if (!sees_caster(view, corners, 3)) continue;
       }
-      const bool exact = !in_front &&
+      const bool exact = !needs_clip &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
       if (exact) {
         ShadowTriangle triangle;
@@ -284,7 +320,10 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       for (unsigned i : {t.x, t.y, t.z}) {
         polygon.push_back({view.view * glm::vec4(receiver.world[i], 1.0f), receiver.world[i], {}});
       }
-      clip_polygon(polygon, in_front_of_caster, scratch);
+      for (const glm::vec4 &plane : view_planes) {
+        clip_polygon(polygon, plane, scratch);
+        if (polygon.size() < 3) break;
+      }
       if (polygon.size() < 3) continue;
       std::vector<glm::vec4> corners;
       for (const ClipVertex &v : polygon) corners.push_back(view.projection * v.clip);
@@ -375,31 +414,37 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
     for (std::size_t caster = 0; caster < scene.objects.size(); ++caster) {
       if (!scene.objects[caster].casts_shadow) continue;
-      ShadowJob job;
-      job.caster = caster;
-      job.light = light;
       auto start = Clock::now();
-      job.view = render_caster_from_light(scene, caster, light, options, next_address);  // 1
-      finish_step(0, start);
-      if (!job.view.note.empty() &&
-          std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
-              result.warnings.end()) {
-        result.warnings.push_back(job.view.note);
-      }
-      if (!job.view.usable) {
-        result.warnings.push_back(job.view.problem);
+      const LightView fitted = fit_light_view(scene, caster, light, options);  // 1
+      result.times.ms[0] += elapsed_ms(start);
+      if (!fitted.usable) {
+        result.warnings.push_back(fitted.problem);
         continue;
       }
-      start = Clock::now();
-      job.texture = make_shadow_texture(job.view, options, next_address);  // 2
-      finish_step(1, start);
-      GrTexInfo info = job.texture.info;
-      next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
-      start = Clock::now();
-      job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                              job.view, options);  // 3
-      finish_step(2, start);
-      result.jobs.push_back(std::move(job));
+      for (LightView &part : split_into_textures(fitted)) {
+        ShadowJob job;
+        job.caster = caster;
+        job.light = light;
+        job.view = part;
+        start = Clock::now();
+        render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
+        finish_step(0, start);
+        if (!job.view.note.empty() &&
+            std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
+                result.warnings.end()) {
+          result.warnings.push_back(job.view.note);
+        }
+        start = Clock::now();
+        job.texture = make_shadow_texture(job.view, options, next_address);  // 2
+        finish_step(1, start);
+        GrTexInfo info = job.texture.info;
+        next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
+        start = Clock::now();
+        job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
+                                                job.view, options);  // 3
+        finish_step(2, start);
+        result.jobs.push_back(std::move(job));
+      }
     }
   }
   auto start = Clock::now();

@@ -19,7 +19,8 @@ enum class ShadowAlpha { Constant, Distance };  // iterated alpha: the light's s
                                                 // fading with the receiver's distance
 
 struct ProjectedShadowOptions {
-  int size = 256;              // shadow texture side in texels, 32..256 (a Voodoo 1 texture)
+  int size = 256;              // shadow map side in texels, 32..512; above 256 (a Voodoo 1
+                               // texture's limit) it is split into 256x256 tiles
   bool auto_size = false;      // pick the size from the caster's size on screen (LOD)
   bool bilinear = true;
   bool direct_path = false;    // step 1 renders straight into texture memory (no LFB read)
@@ -36,7 +37,8 @@ struct LightView {
   glm::vec3 position{0.0f};         // world
   float caster_front = 0.0f;        // light-view distance to the caster's nearest bound
   float caster_distance = 0.0f;     // light to the caster's centre
-  int size = 256;                   // texels
+  int size = 256;                   // texels of this texture
+  bool clip_to_view = false;        // a tile of a larger map: receivers are clipped to its part
   bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
                                     // in the back buffer; a larger one goes direct)
   bool usable = false;              // false: the light is too close for a clean border
@@ -82,11 +84,16 @@ struct ShadowJob {
   ReceiverCoords receivers;
 };
 
-// Step 1. Fits the light's view to the caster and draws the caster flat (565 red 11110b on 0,
-// depth test off, back faces culled) into a size x size region: the back buffer's top-left
-// corner, or texture memory at `texture_address` on the direct path.
-LightView render_caster_from_light(const Scene &scene, std::size_t caster, std::size_t light,
-                                   const ProjectedShadowOptions &options, FxU32 texture_address);
+// Step 1, in three parts. The light's view fitted to the caster's bounding sphere, keeping a
+// clean border; a map larger than a Voodoo 1 texture split into 256x256 tiles; and the caster
+// drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled) in a
+// size x size region: the back buffer's top-left corner, or texture memory at
+// `texture_address` on the direct path.
+LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
+                         const ProjectedShadowOptions &options);
+std::vector<LightView> split_into_textures(const LightView &view);
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address);
 // Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
 // GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,

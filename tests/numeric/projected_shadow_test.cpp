@@ -198,6 +198,24 @@ TEST_F(ProjectedShadowTest, LfbAndDirectPathsGiveIdenticalTextures) {
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }
 
+TEST_F(ProjectedShadowTest, A512MapIsFourVoodooTexturesThatShadowLikeOne) {
+  // A Voodoo 1 texture is at most 256x256: a 512 map is drawn as four tiles, and the shadow they
+  // cast together is the one map's (up to edge resolution), with no seam left unshadowed.
+  const gs::Scene scene = box_over_floor();
+  gs::ProjectedShadowOptions one, tiled;
+  tiled.size = 512;
+  gs::ShadowFrame frame;
+  const std::vector<bool> tiled_mask = shadow_mask(scene, tiled, &frame);
+  EXPECT_EQ(frame.jobs.size(), 4u);
+  const std::vector<bool> one_mask = shadow_mask(scene, one);
+  int tiled_count = 0, one_count = 0;
+  for (bool b : tiled_mask) tiled_count += b;
+  for (bool b : one_mask) one_count += b;
+  EXPECT_GT(one_count, 200);
+  EXPECT_GE(count(tiled_mask, one_mask), one_count * 95 / 100) << "tiles leave part of the shadow out";
+  EXPECT_LE(tiled_count, one_count * 105 / 100) << "tiles shadow more than the map";
+}
+
 TEST_F(ProjectedShadowTest, ALightTooCloseToTheCasterIsReportedAndCastsNothing) {
   gs::Scene scene = box_over_floor();
   scene.lights[0].position = {0, 2.3f, 0};  // 0.8 m above a box of radius 0.87 m
