@@ -134,13 +134,20 @@ class CombineTest : public GlideWindowTest {
     return 0;
   }
 
+  // A random grConstantColorValue (the window is ARGB), returned as the reference reads it.
+  static voodoo_ref::Rgba set_random_constant(std::mt19937 &random) {
+    const GrColor_t argb = std::uniform_int_distribution<unsigned>()(random);
+    grConstantColorValue(argb);
+    return {static_cast<int>(argb >> 16 & 0xFF), static_cast<int>(argb >> 8 & 0xFF),
+            static_cast<int>(argb & 0xFF), static_cast<int>(argb >> 24)};
+  }
+
   std::vector<FxU16> texels_;
   std::vector<voodoo_ref::Rgba> iterated_;
 };
 
 TEST_F(CombineTest, ColorCombineMatchesReferenceForEveryConfiguration) {
   std::mt19937 random(7);
-  std::uniform_int_distribution<unsigned> word;
   // a_local = iterated alpha, a_other = texture alpha, for the colour unit's alpha factors.
   const voodoo_ref::CombineConfig alpha{GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
                                         GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, false};
@@ -152,12 +159,7 @@ TEST_F(CombineTest, ColorCombineMatchesReferenceForEveryConfiguration) {
         for (int other : kOthers)
           for (bool invert : {false, true}) {
             const voodoo_ref::CombineConfig color{function, factor, local, other, invert};
-            const GrColor_t constant_argb = word(random);
-            const voodoo_ref::Rgba constant{static_cast<int>(constant_argb >> 16 & 0xFF),
-                                            static_cast<int>(constant_argb >> 8 & 0xFF),
-                                            static_cast<int>(constant_argb & 0xFF),
-                                            static_cast<int>(constant_argb >> 24)};
-            grConstantColorValue(constant_argb);
+            const voodoo_ref::Rgba constant = set_random_constant(random);
             grColorCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
             draw_pixels();
             const std::vector<FxU16> frame = read_buffer();
@@ -191,7 +193,6 @@ TEST_F(CombineTest, AlphaCombineMatchesReferenceForEveryConfiguration) {
                                         GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_ITERATED, false};
   grColorCombine(color.function, color.factor, color.local, color.other, FXFALSE);
   std::mt19937 random(11);
-  std::uniform_int_distribution<unsigned> word;
   int configurations = 0, mismatches = 0;
   for (int function : kFunctions)
     for (int factor : kFactors)
@@ -199,12 +200,7 @@ TEST_F(CombineTest, AlphaCombineMatchesReferenceForEveryConfiguration) {
         for (int other : kOthers)
           for (bool invert : {false, true}) {
             const voodoo_ref::CombineConfig alpha{function, factor, local, other, invert};
-            const GrColor_t argb = word(random);
-            const voodoo_ref::Rgba constant{static_cast<int>(argb >> 16 & 0xFF),
-                                            static_cast<int>(argb >> 8 & 0xFF),
-                                            static_cast<int>(argb & 0xFF),
-                                            static_cast<int>(argb >> 24)};
-            grConstantColorValue(argb);
+            const voodoo_ref::Rgba constant = set_random_constant(random);
             grAlphaCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
             grBufferClear(0xFFFFFFFFu, 0, 0);
             draw_pixels();
