@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace {
@@ -84,10 +85,11 @@ int main(int argc, char **argv) {
     steps.push_back(gs::render_projected_shadows(fight.at(static_cast<float>(i) / 30.0f), lfb, true).times);
     grBufferSwap(0);
   }
+  const std::string backend = glideShimBackendName();
   grGlideShutdown();
 
   std::printf("demo_bench: fighter demo, 640x480, 256x256 shadow textures, %d frames, %s backend\n",
-              frames, "osmesa/egl per GLIDESHIM_BACKEND");
+              frames, backend.c_str());
   const double none = median(frame_ms[kNone]);
   for (int mode = 0; mode < 3; ++mode) {
     const double ms = median(frame_ms[mode]);
