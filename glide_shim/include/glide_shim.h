@@ -53,6 +53,20 @@ GLIDESHIM_API FxBool glideShimSetWindowSize(int width, int height);
 GLIDESHIM_API FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod);
 GLIDESHIM_API void glideShimRenderToFrameBuffer(void);
 
+/* Plain OpenGL between Glide calls, for techniques Glide never had (depth maps, stencil volumes).
+ * glideShimBeginGL draws every pending Glide primitive, saves the GL state, and leaves current:
+ *   - the framebuffer holding Glide's render buffer (colour attachment drawn to) and its
+ *     24-bit depth and 8-bit stencil buffer, with the viewport and scissor set to the screen;
+ *   - no program, no textures bound, depth test, blending, culling and stencil off.
+ * Glide's depth values are GL window depth 1/w in W-buffer mode (larger is nearer: compare with
+ * GL_GEQUAL / GL_GREATER) and ooz/65535 in Z-buffer mode; a GL pass that must meet Glide's depth
+ * uses the same mapping. glideShimEndGL restores the state (the pixels drawn stay). FXFALSE with
+ * an error when no window is open or GL is already begun. Use glideShimGetProcAddress for the
+ * gl* entry points of the shim's context (NULL for unknown names). */
+GLIDESHIM_API FxBool glideShimBeginGL(void);
+GLIDESHIM_API void glideShimEndGL(void);
+GLIDESHIM_API void *glideShimGetProcAddress(const char *name);
+
 /* Writes a colour buffer (GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER) as an 8-bit RGB PNG
  * through the Voodoo's gamma table, as the monitor would show it. FXFALSE (with an error
  * reported) if the buffer or path is bad. */

@@ -16,6 +16,8 @@ class Backend {
  public:
   virtual ~Backend() = default;
   virtual const char *name() const = 0;
+  // Any GL entry point of this context by name (for code outside the shim); null if unknown.
+  virtual void *proc_address(const char *name) const = 0;
   GlFunctions gl;
 };
 

@@ -20,6 +20,9 @@ class EglBackend final : public Backend {
     if (library_ != nullptr) dlclose(library_);
   }
   const char *name() const override { return "egl"; }
+  void *proc_address(const char *function) const override {
+    return reinterpret_cast<void *>(get_proc_(function));
+  }
 
   bool open(std::string &error) {
     library_ = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
@@ -27,8 +30,9 @@ class EglBackend final : public Backend {
       error = std::string("cannot load libEGL.so.1 (install libegl1 libegl-mesa0): ") + dlerror();
       return false;
     }
-    auto get_proc =
+    get_proc_ =
         reinterpret_cast<decltype(&eglGetProcAddress)>(dlsym(library_, "eglGetProcAddress"));
+    auto get_proc = get_proc_;
     if (get_proc == nullptr) {
       error = "libEGL.so.1 has no eglGetProcAddress";
       return false;
@@ -96,6 +100,7 @@ class EglBackend final : public Backend {
   decltype(&eglMakeCurrent) make_current_ = nullptr;
   decltype(&eglDestroyContext) destroy_context_ = nullptr;
   decltype(&eglTerminate) terminate_ = nullptr;
+  decltype(&eglGetProcAddress) get_proc_ = nullptr;
 };
 
 }  // namespace

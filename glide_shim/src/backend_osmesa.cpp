@@ -15,6 +15,9 @@ class OSMesaBackend final : public Backend {
     if (library_ != nullptr) dlclose(library_);
   }
   const char *name() const override { return "osmesa"; }
+  void *proc_address(const char *function) const override {
+    return reinterpret_cast<void *>(get_proc_(function));
+  }
 
   bool open(std::string &error) {
     library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
@@ -28,8 +31,9 @@ class OSMesaBackend final : public Backend {
         reinterpret_cast<decltype(&OSMesaMakeCurrent)>(dlsym(library_, "OSMesaMakeCurrent"));
     destroy_ = reinterpret_cast<decltype(&OSMesaDestroyContext)>(
         dlsym(library_, "OSMesaDestroyContext"));
-    auto get_proc = reinterpret_cast<decltype(&OSMesaGetProcAddress)>(
+    get_proc_ = reinterpret_cast<decltype(&OSMesaGetProcAddress)>(
         dlsym(library_, "OSMesaGetProcAddress"));
+    auto get_proc = get_proc_;
     if (create == nullptr || make_current == nullptr || destroy_ == nullptr ||
         get_proc == nullptr) {
       error = "libOSMesa.so.8 lacks the OSMesa entry points";
@@ -58,6 +62,7 @@ class OSMesaBackend final : public Backend {
   void *library_ = nullptr;
   OSMesaContext context_ = nullptr;
   decltype(&OSMesaDestroyContext) destroy_ = nullptr;
+  decltype(&OSMesaGetProcAddress) get_proc_ = nullptr;
   unsigned char surface_[4] = {};
 };
 

@@ -56,6 +56,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
 
   lfb = LfbLockState{};
   texture_target = TextureTarget{};
+  plain_gl = false;
 }
 
 void GlideContext::flush() {

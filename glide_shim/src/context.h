@@ -148,6 +148,7 @@ class GlideContext {
   DisplayState display{};
   LfbLockState lfb{};
   TextureTarget texture_target{};
+  bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;
 

@@ -300,6 +300,47 @@ void GlRenderer::flush() {
   queue_.clear();
 }
 
+void GlRenderer::begin_plain_gl() {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  gl.glPushAttrib(GL_ALL_ATTRIB_BITS);
+  gl.glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
+  for (GLenum matrix : {GL_PROJECTION, GL_MODELVIEW, GL_TEXTURE}) {
+    gl.glMatrixMode(matrix);
+    gl.glPushMatrix();
+    gl.glLoadIdentity();
+  }
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glDrawBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + buffer_index(context_.raster.render_buffer)));
+  gl.glViewport(0, 0, width_, height_);
+  gl.glScissor(0, 0, width_, height_);
+  gl.glUseProgram(0);
+  gl.glBindTexture(GL_TEXTURE_2D, 0);
+  for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_SCISSOR_TEST}) {
+    gl.glDisable(cap);
+  }
+  gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl.glDepthMask(GL_TRUE);
+  gl.glStencilMask(0xFF);
+}
+
+void GlRenderer::end_plain_gl() {
+  const GlFunctions &gl = backend_->gl;
+  for (GLenum matrix : {GL_TEXTURE, GL_MODELVIEW, GL_PROJECTION}) {
+    gl.glMatrixMode(matrix);
+    gl.glPopMatrix();
+  }
+  gl.glPopClientAttrib();
+  gl.glPopAttrib();
+  // State the attribute stack does not cover: the shim sets what it needs before every draw.
+  gl.glUseProgram(0);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glActiveTexture(GL_TEXTURE0);
+  gl.glBindTexture(GL_TEXTURE_2D, 0);
+  gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
+  gl.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
 void GlRenderer::start_counting() {
   flush();
   counting_ = true;

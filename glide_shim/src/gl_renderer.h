@@ -59,6 +59,11 @@ class GlRenderer {
   void begin_texture_target(int side);
   void end_texture_target(std::uint16_t *words);
 
+  // Hands the GL context to outside code (glideShimBeginGL) and takes it back.
+  void begin_plain_gl();
+  void end_plain_gl();
+  void *proc_address(const char *name) const { return backend_->proc_address(name); }
+
   void start_counting();
   std::uint32_t pixels_counted() const { return pixels_counted_; }
 
