@@ -3,6 +3,7 @@
 #include "fight_scene.h"
 #include "projected_shadow.h"
 #include "scene.h"
+#include "technique.h"
 
 #include <CLI/CLI.hpp>
 #include <OpenImageIO/imagebuf.h>
@@ -28,11 +29,9 @@ struct TechniqueChoice {
   std::string alpha = "constant";
 };
 
-const std::vector<std::string> kTechniques = {"projected", "projected-chroma", "none"};
-
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size) {
   command.add_option("--technique", choice.name, "shadow technique")
-      ->check(CLI::IsMember(kTechniques))
+      ->check(CLI::IsMember(gs::technique_names()))
       ->capture_default_str();
   command.add_option("--shadow-size", shadow_size,
                      "shadow map side in texels; 512 is drawn as four 256x256 textures (a Voodoo 1 limit)")
@@ -50,8 +49,9 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
       ->capture_default_str();
 }
 
-gs::ProjectedShadowOptions shadow_options(const TechniqueChoice &choice, int shadow_size) {
-  gs::ProjectedShadowOptions options;
+gs::TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_size) {
+  gs::TechniqueOptions all;
+  gs::ProjectedShadowOptions &options = all.projected;
   options.size = shadow_size;
   options.auto_size = choice.auto_size;
   options.bilinear = !choice.point;
@@ -59,7 +59,7 @@ gs::ProjectedShadowOptions shadow_options(const TechniqueChoice &choice, int sha
   options.chroma_key = choice.name == "projected-chroma";
   options.projective = !choice.affine;
   options.alpha = choice.alpha == "distance" ? gs::ShadowAlpha::Distance : gs::ShadowAlpha::Constant;
-  return options;
+  return all;
 }
 
 bool open_window(int width, int height) {
@@ -73,17 +73,6 @@ bool open_window(int width, int height) {
   }
   grGammaCorrectionValue(0.8f);  // Listing 4
   return true;
-}
-
-// Renders one frame into the back buffer with the chosen technique.
-gs::ShadowFrame render_frame(const gs::Scene &scene, const TechniqueChoice &choice,
-                             const gs::ProjectedShadowOptions &options, bool synchronous) {
-  if (choice.name == "none") {
-    gs::ShadowFrame frame;
-    gs::render_scene(scene, gs::project_scene(scene));
-    return frame;
-  }
-  return gs::render_projected_shadows(scene, options, synchronous);
 }
 
 bool check_lfb_fits(const TechniqueChoice &choice, int shadow_size, int width, int height) {
@@ -113,19 +102,17 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-void print_step_table(const std::vector<gs::StepTimes> &times) {
-  static const char *kSteps[5] = {"1 render the caster from the light", "2 make the texture (LFB read + download)",
-                                  "3 (s,t) for the receivers", "4 render the scene",
-                                  "5 shadow pass over the flagged triangles"};
+void print_step_table(const std::vector<gs::FrameReport> &reports) {
   std::vector<double> total;
-  for (const gs::StepTimes &t : times) total.push_back(t.total_ms);
+  for (const gs::FrameReport &r : reports) total.push_back(r.total_ms);
   const double frame = median(total);
-  std::printf("\nStep timing (median of %zu frames, each step synchronised):\n", times.size());
-  for (int step = 0; step < 5; ++step) {
+  std::printf("\nStep timing (median of %zu frames, each step synchronised):\n", reports.size());
+  for (std::size_t step = 0; step < reports.front().steps.size(); ++step) {
     std::vector<double> values;
-    for (const gs::StepTimes &t : times) values.push_back(t.ms[step]);
+    for (const gs::FrameReport &r : reports) values.push_back(r.steps[step].second);
     const double ms = median(values);
-    std::printf("  step %-44s %7.2f ms  %5.1f%%\n", kSteps[step], ms, frame > 0 ? 100.0 * ms / frame : 0.0);
+    std::printf("  step %-44s %7.2f ms  %5.1f%%\n", reports.front().steps[step].first.c_str(), ms,
+                frame > 0 ? 100.0 * ms / frame : 0.0);
   }
   std::printf("  %-49s %7.2f ms  (%.0f frames/s)\n", "whole frame", frame, frame > 0 ? 1000.0 / frame : 0.0);
 }
@@ -188,17 +175,23 @@ int run_demo(int frames, const std::string &size_text, int shadow_size, const Te
     std::fprintf(stderr, "glideshadows demo: cannot create '%s': %s\n", out_dir.c_str(), error.message().c_str());
     return 1;
   }
+  std::string problem;
+  std::unique_ptr<gs::ShadowTechnique> technique =
+      gs::make_technique(choice.name, technique_options(choice, shadow_size), problem);
+  if (!technique) {
+    std::fprintf(stderr, "glideshadows demo: %s\n", problem.c_str());
+    return 2;
+  }
   if (!open_window(width, height)) return 1;
   gs::FightScene fight(width, height, shadow_size);
-  const gs::ProjectedShadowOptions options = shadow_options(choice, shadow_size);
-  std::vector<gs::StepTimes> times;
+  std::vector<gs::FrameReport> times;
   std::vector<std::string> written;
   std::vector<std::string> warnings;
   const bool tty = isatty(fileno(stderr)) != 0;
   for (int i = 0; i < frames; ++i) {
     const gs::Scene &scene = fight.at(static_cast<float>(i) / static_cast<float>(fps));
-    const gs::ShadowFrame frame = render_frame(scene, choice, options, true);
-    if (i > 0) times.push_back(frame.times);  // frame 0 pays llvmpipe's shader compiles
+    const gs::FrameReport frame = technique->render(scene, true);
+    if (i > 0) times.push_back(frame);  // frame 0 pays llvmpipe's shader compiles
     for (const std::string &w : frame.warnings) {
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
     }
@@ -223,7 +216,7 @@ int run_demo(int frames, const std::string &size_text, int shadow_size, const Te
   for (const std::string &w : warnings) std::fprintf(stderr, "glideshadows demo: warning: %s\n", w.c_str());
   std::printf("glideshadows demo: %d frames %dx%d, technique %s, shadow texture %d, in %s/frame_NNNN.png\n",
               frames, width, height, choice.name.c_str(), shadow_size, out_dir.c_str());
-  if (choice.name != "none" && !times.empty()) print_step_table(times);
+  if (!times.empty()) print_step_table(times);
   if (sheet) {
     const std::string path = (fs::path(out_dir) / "contact_sheet.png").string();
     if (!write_contact_sheet(written, path)) {
@@ -256,16 +249,21 @@ int run_render(const std::string &scene_path, const TechniqueChoice &choice, int
   }
   const int size = scene.lights.empty() ? 256 : scene.lights[0].shadow_size;
   if (!check_lfb_fits(choice, size, scene.width, scene.height)) return 2;
+  std::unique_ptr<gs::ShadowTechnique> technique =
+      gs::make_technique(choice.name, technique_options(choice, size), error);
+  if (!technique) {
+    std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
+    return 2;
+  }
   if (!open_window(scene.width, scene.height)) return 1;
-  const gs::ProjectedShadowOptions options = shadow_options(choice, size);
-  const gs::ShadowFrame frame = render_frame(scene, choice, options, false);
+  const gs::FrameReport frame = technique->render(scene, false);
   for (const std::string &w : frame.warnings) std::fprintf(stderr, "glideshadows render: warning: %s\n", w.c_str());
   bool ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, out.c_str());
   if (ok) std::printf("image: %s\n", out.c_str());
   if (ok && !mask.empty()) {
     const float gamma = 1.0f;  // the mask is data, not a picture: no gamma
     grGammaCorrectionValue(gamma);
-    gs::render_shadow_mask(scene, options, frame);
+    technique->render_mask(scene);
     ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, mask.c_str());
     if (ok) std::printf("mask: %s (white: pixels the technique darkened)\n", mask.c_str());
   }
