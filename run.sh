@@ -15,7 +15,7 @@ PACKAGES=(
   cmake g++ make pkg-config
   libosmesa6-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libopenimageio-dev openimageio-tools
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
 )
 
