@@ -75,18 +75,6 @@ bool open_window(int width, int height) {
   return true;
 }
 
-bool check_lfb_fits(const TechniqueChoice &choice, int shadow_size, int width, int height) {
-  const int texture = std::min(shadow_size, 256);  // larger maps are drawn as 256x256 tiles
-  if (choice.direct_path || choice.name == "none" || (texture <= width && texture <= height)) {
-    return true;
-  }
-  std::fprintf(stderr,
-               "glideshadows: a %dx%d shadow texture does not fit in the %dx%d back buffer that "
-               "step 1 draws into; use a larger --size or --direct-path\n",
-               texture, texture, width, height);
-  return false;
-}
-
 bool parse_size(const std::string &text, int &width, int &height) {
   char x = 0;
   char rest = 0;
@@ -168,7 +156,6 @@ int run_demo(int frames, const std::string &size_text, int shadow_size, const Te
     std::fprintf(stderr, "glideshadows demo: --size '%s' must be WxH with each side 64..2048\n", size_text.c_str());
     return 2;
   }
-  if (!check_lfb_fits(choice, shadow_size, width, height)) return 2;
   std::error_code error;
   fs::create_directories(out_dir, error);
   if (error) {
@@ -244,13 +231,8 @@ int run_render(const std::string &scene_path, const TechniqueChoice &choice, int
     std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
     return 1;
   }
-  if (shadow_size > 0) {
-    for (gs::SpotLight &light : scene.lights) light.shadow_size = shadow_size;
-  }
-  const int size = scene.lights.empty() ? 256 : scene.lights[0].shadow_size;
-  if (!check_lfb_fits(choice, size, scene.width, scene.height)) return 2;
   std::unique_ptr<gs::ShadowTechnique> technique =
-      gs::make_technique(choice.name, technique_options(choice, size), error);
+      gs::make_technique(choice.name, technique_options(choice, shadow_size), error);
   if (!technique) {
     std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
     return 2;

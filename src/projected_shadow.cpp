@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 
 namespace gs {
 namespace {
@@ -136,7 +135,14 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   const Sphere sphere = bounding_sphere(object);
   LightView view;
   view.position = light.position;
-  view.size = options.auto_size ? screen_size_texture(scene, sphere) : options.size;
+  view.size = options.auto_size  ? screen_size_texture(scene, sphere)
+              : options.size > 0 ? options.size
+                                 : light.shadow_size;
+  if (view.size < 32 || view.size > 512 || (view.size & (view.size - 1)) != 0) {
+    view.problem = "shadow size " + std::to_string(view.size) + " for light " +
+                   std::to_string(light_index) + " is not a power of two in 32..512";
+    return view;
+  }
   view.caster_distance = glm::length(sphere.centre - light.position);
   // The view is fitted so the caster's bounding sphere leaves `border_texels` (plus one for the
   // 1/16-pixel snap and bilinear's reach) clean on every side: the Figure 12/13 bug cannot occur.
@@ -197,8 +203,11 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
                 "memory directly";
   }
   // The flat render: 565 red 11110b on 0, no depth test, back faces culled.
-  if (view.direct_path) {
-    glideShimRenderToTexture(GR_TMU0, texture_address, lod_for(view.size));
+  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, lod_for(view.size))) {
+    view.usable = false;
+    view.problem = std::string("step 1 cannot render into texture memory: ") +
+                   glideShimGetLastErrorMessage();
+    return;
   }
   const FxU32 side = static_cast<FxU32>(view.size);
   grClipWindow(0, 0, side, side);
@@ -387,9 +396,7 @@ void restore_scene_state() {
 
 }  // namespace
 
-void render_shadow_pass(const ShadowJob &job, const Scene &scene,
-                        const ProjectedShadowOptions &options) {
-  (void)scene;
+void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options) {
   set_shadow_pass_state(job.texture, options);
   // Black, at texture alpha x iterated alpha, over the lit scene.
   grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ZERO,
@@ -422,6 +429,15 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         continue;
       }
       for (LightView &part : split_into_textures(fitted)) {
+        // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
+        GrTexInfo needed{lod_for(part.size), lod_for(part.size), GR_ASPECT_1x1,
+                         GR_TEXFMT_ARGB_4444, nullptr};
+        if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
+            grTexMaxAddress(GR_TMU0) + 8) {
+          result.warnings.push_back("TMU memory is full: '" + scene.objects[caster].name +
+                                    "' casts no shadow from light " + std::to_string(light));
+          break;
+        }
         ShadowJob job;
         job.caster = caster;
         job.light = light;
@@ -429,6 +445,10 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         start = Clock::now();
         render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
         finish_step(0, start);
+        if (!job.view.usable) {
+          result.warnings.push_back(job.view.problem);
+          continue;
+        }
         if (!job.view.note.empty() &&
             std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
                 result.warnings.end()) {
@@ -451,15 +471,13 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   render_scene(scene, frame);  // 4
   finish_step(3, start);
   start = Clock::now();
-  for (const ShadowJob &job : result.jobs) render_shadow_pass(job, scene, options);  // 5
+  for (const ShadowJob &job : result.jobs) render_shadow_pass(job, options);  // 5
   finish_step(4, start);
   result.times.total_ms = elapsed_ms(frame_start);
   return result;
 }
 
-void render_shadow_mask(const Scene &scene, const ProjectedShadowOptions &options,
-                        const ShadowFrame &frame) {
-  (void)scene;
+void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame) {
   grDepthMask(FXFALSE);
   grBufferClear(0, 0, 0);  // colour only: the depth buffer keeps the frame's surfaces
   for (const ShadowJob &job : frame.jobs) {

@@ -19,8 +19,9 @@ enum class ShadowAlpha { Constant, Distance };  // iterated alpha: the light's s
                                                 // fading with the receiver's distance
 
 struct ProjectedShadowOptions {
-  int size = 256;              // shadow map side in texels, 32..512; above 256 (a Voodoo 1
-                               // texture's limit) it is split into 256x256 tiles
+  int size = 0;                // shadow map side in texels, 32..512, for every light; 0: each
+                               // light's shadow_size. Above 256 (a Voodoo 1 texture's limit)
+                               // the map is split into 256x256 tiles
   bool auto_size = false;      // pick the size from the caster's size on screen (LOD)
   bool bilinear = true;
   bool direct_path = false;    // step 1 renders straight into texture memory (no LFB read)
@@ -107,8 +108,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, LEQUAL W-buffer,
 // alpha = texture alpha x iterated alpha, blended over the scene.
-void render_shadow_pass(const ShadowJob &job, const Scene &scene,
-                        const ProjectedShadowOptions &options);
+void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options);
 
 struct ShadowFrame {
   StepTimes times;
@@ -123,7 +123,6 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
 
 // The shadow mask of a frame just rendered: every pixel step 5 darkened, white on black, drawn
 // into the back buffer over the frame's depth buffer (call before the next clear).
-void render_shadow_mask(const Scene &scene, const ProjectedShadowOptions &options,
-                        const ShadowFrame &frame);
+void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame);
 
 }  // namespace gs

@@ -45,7 +45,7 @@ class ProjectedTexture final : public ShadowTechnique {
     report.warnings = frame_.warnings;
     return report;
   }
-  void render_mask(const Scene &scene) override { render_shadow_mask(scene, options_, frame_); }
+  void render_mask(const Scene &) override { render_shadow_mask(options_, frame_); }
 
  private:
   ProjectedShadowOptions options_;

@@ -16,7 +16,9 @@ extern "C" {
 #define GLIDESHIM_API
 #endif
 
-/* Every kind of error an entry point can report. A call that reports one has changed nothing. */
+/* Every kind of error an entry point can report. A call that reports one has changed nothing,
+ * with one exception: GLIDESHIM_ERR_BACKEND may come from work the call finished regardless
+ * (writing a GLIDESHIM_DUMP_DIR frame after a swap, compiling a shader for queued triangles). */
 typedef enum {
   GLIDESHIM_OK = 0,
   GLIDESHIM_ERR_NOT_INITIALIZED, /* a call before grGlideInit, or one needing a window with none open */
@@ -60,7 +62,8 @@ GLIDESHIM_API void glideShimRenderToFrameBuffer(void);
  *   - no program, no textures bound, depth test, blending, culling and stencil off.
  * Glide's depth values are GL window depth 1/w in W-buffer mode (larger is nearer: compare with
  * GL_GEQUAL / GL_GREATER) and ooz/65535 in Z-buffer mode; a GL pass that must meet Glide's depth
- * uses the same mapping. glideShimEndGL restores the state (the pixels drawn stay). FXFALSE with
+ * uses the same mapping. Until glideShimEndGL, every Glide call is refused (INCONSISTENT).
+ * glideShimEndGL restores the state (the pixels drawn stay). FXFALSE with
  * an error when no window is open or GL is already begun. Use glideShimGetProcAddress for the
  * gl* entry points of the shim's context (NULL for unknown names). */
 GLIDESHIM_API FxBool glideShimBeginGL(void);
@@ -73,7 +76,8 @@ GLIDESHIM_API void *glideShimGetProcAddress(const char *name);
 GLIDESHIM_API FxBool glideShimWritePng(GrBuffer_t buffer, const char *path);
 
 /* Number of pixels that passed every test and were written by draw calls since the last reset:
- * a direct count (GL occlusion query), used by tests of depth invariance. */
+ * a direct count (GL occlusion query), used by tests of depth invariance. Counting starts at the
+ * first glideShimResetPixelsWritten (0 before it) and makes every flush wait for its result. */
 GLIDESHIM_API FxU32 glideShimPixelsWritten(void);
 GLIDESHIM_API void glideShimResetPixelsWritten(void);
 

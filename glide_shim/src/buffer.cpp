@@ -83,8 +83,9 @@ void grRenderBuffer(GrBuffer_t buffer) {
 void grClipWindow(FxU32 minx, FxU32 miny, FxU32 maxx, FxU32 maxy) {
   auto &ctx = current();
   if (!ctx.require_open("grClipWindow")) return;
-  const auto width = static_cast<FxU32>(ctx.display.width);
-  const auto height = static_cast<FxU32>(ctx.display.height);
+  // Inside glideShimRenderToTexture the clip window lives in the target square.
+  const auto width = static_cast<FxU32>(ctx.texture_target.active ? ctx.texture_target.side : ctx.display.width);
+  const auto height = static_cast<FxU32>(ctx.texture_target.active ? ctx.texture_target.side : ctx.display.height);
   if (minx > maxx || miny > maxy || maxx > width || maxy > height) {
     ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
                "grClipWindow: (" + std::to_string(minx) + "," + std::to_string(miny) + ")-(" +
@@ -126,9 +127,13 @@ FxBool glideShimWritePng(GrBuffer_t buffer, const char *path) {
 FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod) {
   auto &ctx = current();
   if (!ctx.require_open("glideShimRenderToTexture")) return FXFALSE;
-  if (tmu != GR_TMU0 || !glide_shim::is_lod(lod)) {
-    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "glideShimRenderToTexture: TMU must be GR_TMU0 and lod "
-                                           "GR_LOD_256..GR_LOD_1");
+  if (tmu != GR_TMU0) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "glideShimRenderToTexture: TMU must be GR_TMU0");
+    return FXFALSE;
+  }
+  if (!glide_shim::is_lod(lod)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "glideShimRenderToTexture: lod must be GR_LOD_256..GR_LOD_1");
     return FXFALSE;
   }
   if (ctx.texture_target.active) {

@@ -122,6 +122,7 @@ struct LfbLockState {
   GrBuffer_t write_buffer;
   GrOriginLocation_t write_origin;
   std::vector<FxU16> read_pixels, write_pixels;  // whole-screen 565 copies handed to the app
+  std::vector<FxU16> write_original;             // write_pixels as locked, to find what changed
 };
 
 struct ErrorState {

@@ -46,6 +46,11 @@ void GlideContext::report(GlideShimError kind, const std::string &message) {
 }
 
 bool GlideContext::require_open(const char *function) {
+  if (plain_gl) {
+    report(GLIDESHIM_ERR_INCONSISTENT, std::string(function) +
+                                           ": Glide calls wait for glideShimEndGL (plain GL is begun)");
+    return false;
+  }
   if (initialized && display.open) return true;
   report(GLIDESHIM_ERR_NOT_INITIALIZED,
          std::string(function) + ": no window is open (call grGlideInit and grSstWinOpen first)");

@@ -5,6 +5,7 @@
 
 #include "context.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace glide_shim {

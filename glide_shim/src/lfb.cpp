@@ -5,6 +5,7 @@
 #include "depth.h"
 #include "gl_renderer.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -125,6 +126,7 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
   if (reading) {
     ctx.lfb.read_locked = true;
   } else {
+    ctx.lfb.write_original = pixels;
     ctx.lfb.write_locked = true;
     ctx.lfb.write_buffer = buffer;
     ctx.lfb.write_origin = origin;
@@ -153,8 +155,22 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
                          pixels.begin() + (h - 1 - row) * w);
       }
     }
-    ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), 0, 0, w, h, pixels.data(),
-                              static_cast<std::size_t>(w) * 2);
+    std::vector<std::uint16_t> &original = ctx.lfb.write_original;
+    if (ctx.lfb.write_origin == GR_ORIGIN_LOWER_LEFT) {
+      for (int row = 0; row < h / 2; ++row) {
+        std::swap_ranges(original.begin() + row * w, original.begin() + (row + 1) * w,
+                         original.begin() + (h - 1 - row) * w);
+      }
+    }
+    // Only rows the program changed go back, so drawing done while the lock was held survives.
+    for (int row = 0; row < h; ++row) {
+      const auto begin = static_cast<std::size_t>(row) * static_cast<std::size_t>(w);
+      if (!std::equal(pixels.begin() + static_cast<long>(begin), pixels.begin() + static_cast<long>(begin + w),
+                      original.begin() + static_cast<long>(begin))) {
+        ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), 0, row, w, 1,
+                                  pixels.data() + begin, static_cast<std::size_t>(w) * 2);
+      }
+    }
     ctx.lfb.write_locked = false;
     return FXTRUE;
   }

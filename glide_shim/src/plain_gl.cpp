@@ -26,7 +26,6 @@ FxBool glideShimBeginGL(void) {
 
 void glideShimEndGL(void) {
   auto &ctx = current();
-  if (!ctx.require_open("glideShimEndGL")) return;
   if (!ctx.plain_gl) {
     ctx.report(GLIDESHIM_ERR_INCONSISTENT, "glideShimEndGL: glideShimBeginGL was not called");
     return;
@@ -41,7 +40,10 @@ void *glideShimGetProcAddress(const char *name) {
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "glideShimGetProcAddress: name is NULL");
     return nullptr;
   }
-  if (!ctx.require_open("glideShimGetProcAddress")) return nullptr;
+  if (!ctx.renderer) {
+    ctx.report(GLIDESHIM_ERR_NOT_INITIALIZED, "glideShimGetProcAddress: no window is open");
+    return nullptr;
+  }
   return ctx.renderer->proc_address(name);
 }
 

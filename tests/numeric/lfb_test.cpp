@@ -529,3 +529,25 @@ TEST_F(AuxBufferTest, ZBufferClearCodesReadBackExactly) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(GlideWindowTest, DrawingDuringAWriteLockSurvivesTheUnlock) {
+  // The unlock writes back only what the program changed through the pointer.
+  grDitherMode(GR_DITHER_DISABLE);
+  grBufferClear(0, 0, 0);
+  GrLfbInfo_t info{};
+  info.size = sizeof info;
+  ASSERT_TRUE(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER, GR_LFBWRITEMODE_565,
+                        GR_ORIGIN_UPPER_LEFT, FXFALSE, &info));
+  GrVertex white = vertex();
+  white.r = white.g = white.b = 255;
+  draw_rect(0, 0, 16, 16, white);
+  static_cast<FxU16 *>(info.lfbPtr)[40 * (info.strideInBytes / 2) + 40] = 0x07E0;
+  ASSERT_TRUE(grLfbUnlock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER));
+  EXPECT_EQ(pixel(5, 5), 0xFFFF) << "the triangle drawn during the lock was erased";
+  EXPECT_EQ(pixel(40, 40), 0x07E0);
+  expect_no_error();
+}
+
+}  // namespace

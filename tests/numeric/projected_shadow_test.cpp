@@ -37,7 +37,7 @@ class ProjectedShadowTest : public ::testing::Test {
   static std::vector<bool> shadow_mask(const gs::Scene &scene, const gs::ProjectedShadowOptions &options,
                                        gs::ShadowFrame *out = nullptr) {
     const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
-    gs::render_shadow_mask(scene, options, frame);
+    gs::render_shadow_mask(options, frame);
     std::vector<bool> mask;
     for (FxU16 p : back_buffer()) mask.push_back(p != 0);
     if (out != nullptr) *out = frame;
@@ -214,6 +214,25 @@ TEST_F(ProjectedShadowTest, A512MapIsFourVoodooTexturesThatShadowLikeOne) {
   EXPECT_GT(one_count, 200);
   EXPECT_GE(count(tiled_mask, one_mask), one_count * 95 / 100) << "tiles leave part of the shadow out";
   EXPECT_LE(tiled_count, one_count * 105 / 100) << "tiles shadow more than the map";
+}
+
+TEST_F(ProjectedShadowTest, RunningOutOfTmuMemoryIsReported) {
+  // 20 casters at 256x256 ARGB_4444 need 2.5 MB; the TMU has 2 MB: 16 fit, the rest say so.
+  gs::Scene scene = box_over_floor();
+  for (int i = 0; i < 19; ++i) {
+    scene.objects.push_back(object("box " + std::to_string(i), gs::make_box(glm::vec3(0.1f)),
+                                   {-2.0f + 0.2f * static_cast<float>(i), 1.0f, 1.0f}));
+  }
+  gs::ProjectedShadowOptions options;
+  options.size = 256;
+  options.direct_path = true;
+  gs::ShadowFrame frame;
+  shadow_mask(scene, options, &frame);
+  EXPECT_EQ(frame.jobs.size(), 16u);
+  int full = 0;
+  for (const std::string &w : frame.warnings) full += w.find("TMU memory is full") != std::string::npos;
+  EXPECT_EQ(full, 4);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }
 
 TEST_F(ProjectedShadowTest, ALightTooCloseToTheCasterIsReportedAndCastsNothing) {
