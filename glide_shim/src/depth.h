@@ -15,7 +15,7 @@ float vertex_depth(const DepthState &depth, float ooz, float oow);
 double gl_depth_from_code(FxU16 code, bool w_buffer);
 // The hardware's 16-bit code for a GL depth, as an aux-buffer LFB read returns it.
 FxU16 code_from_gl_depth(float depth, bool w_buffer);
-// W-buffer code of 1/w: 4096 steps per octave of w, 0 for 1/w >= 1 (voodoo_pipeline.md).
+// W-buffer code of 1/w: 4096 steps per octave of w, 0 for 1/w >= 1 (as MAME and 86Box implement it).
 FxU16 w_code(double oow);
 double oow_from_w_code(FxU16 code);
 

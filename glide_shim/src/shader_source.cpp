@@ -149,7 +149,7 @@ PipelineKey pipeline_key(const GlideContext &context) {
     const TexCombineUnit &tmu = context.tmu.combine;
     key.tmu_rgb = shape(tmu.rgb_function, tmu.rgb_factor);
     key.tmu_alpha = shape(tmu.alpha_function, tmu.alpha_factor);
-    // With a single LOD the magnification filter decides (voodoo_pipeline.md, texture fetch).
+    // With a single LOD the magnification filter decides (MAME's and 86Box's TMU: with one LOD level the magnification bit picks the filter).
     key.bilinear = context.tmu.mag_filter == GR_TEXTUREFILTER_BILINEAR;
     key.wrap_s = context.tmu.clamp_s == GR_TEXTURECLAMP_WRAP;
     key.wrap_t = context.tmu.clamp_t == GR_TEXTURECLAMP_WRAP;

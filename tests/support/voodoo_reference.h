@@ -1,7 +1,7 @@
 // Independent CPU reference of the 3dfx Voodoo 1 (SST-1) pixel arithmetic, for tests of the
 // Glide shim: combine units, texel expansion and sampling, alpha/chroma tests, alpha blend and
-// 565 write, W/Z depth codes and the gamma CLUT. Built from docs/voodoo_pipeline.md and
-// docs/glide_api.md (MAME / 86Box / 3dfx behaviour), never from the shim's sources.
+// 565 write, W/Z depth codes and the gamma CLUT. Built from the team's notes on MAME, 86Box
+// and 3dfx's sources (shared/docs/voodoo_pipeline.md, glide_api.md), never from the shim's sources.
 #ifndef VOODOO_REFERENCE_H
 #define VOODOO_REFERENCE_H
 

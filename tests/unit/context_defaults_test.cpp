@@ -1,4 +1,4 @@
-// The state grSstWinOpen establishes (docs glide_api.md section 1, "Defaults set by
+// The state grSstWinOpen establishes (3dfx's gsst.c, as summarised in the team's notes, shared/docs/glide_api.md section 1, "Defaults set by
 // grSstWinOpen", from 3dfx's gsst.c), group by group in glide_shim::current(); that a
 // close/open cycle restores it after changes; the hardware query and version string; and that
 // the window's colour format decides how GrColor_t values (clear colour, constant colour) are read.

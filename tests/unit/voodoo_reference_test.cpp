@@ -1,5 +1,5 @@
 // Unit tests of the Voodoo 1 CPU reference (tests/support/voodoo_reference.*) against values
-// worked out by hand from docs/voodoo_pipeline.md and docs/glide_api.md, so that the reference
+// worked out by hand from the team's notes on MAME, 86Box and 3dfx's Glide sources (shared/docs), so that the reference
 // can be trusted when it judges the shim. Each expected number is derived in a comment.
 #include "voodoo_reference.h"
 
