@@ -14,10 +14,10 @@ namespace glide_shim {
 // X(name) for every GL function called by the shim. decltype(&::glName) gives the pointer type
 // without odr-using the symbol, so nothing is linked against libGL or libOSMesa.
 #define GLIDESHIM_GL_FUNCTIONS(X) \
-  X(glGetString) X(glGetError) X(glGetIntegerv) X(glViewport) X(glScissor) X(glEnable) \
-  X(glDisable) X(glClear) X(glClearColor) X(glClearDepth) X(glClearStencil) X(glColorMask) \
+  X(glViewport) X(glScissor) X(glEnable) \
+  X(glDisable) X(glClear) X(glClearColor) X(glClearDepth) X(glColorMask) \
   X(glDepthMask) X(glDepthFunc) X(glBlendFunc) X(glReadPixels) X(glDrawPixels) \
-  X(glPixelStorei) X(glWindowPos2i) X(glFinish) X(glFlush) X(glGenTextures) \
+  X(glPixelStorei) X(glWindowPos2i) X(glFinish) X(glGenTextures) \
   X(glDeleteTextures) X(glBindTexture) X(glTexImage2D) X(glTexSubImage2D) X(glTexParameteri) \
   X(glActiveTexture) X(glGenFramebuffers) X(glDeleteFramebuffers) X(glBindFramebuffer) \
   X(glFramebufferRenderbuffer) X(glCheckFramebufferStatus) X(glGenRenderbuffers) \
@@ -27,11 +27,11 @@ namespace glide_shim {
   X(glLinkProgram) X(glGetProgramiv) X(glGetProgramInfoLog) X(glUseProgram) X(glDeleteShader) \
   X(glDeleteProgram) X(glGetUniformLocation) X(glUniform1i) X(glUniform1f) X(glUniform2f) \
   X(glUniform4f) X(glUniform4fv) X(glVertexAttribPointer) X(glEnableVertexAttribArray) \
-  X(glDisableVertexAttribArray) X(glDrawArrays) X(glPushAttrib) X(glPopAttrib) \
+  X(glDrawArrays) X(glPushAttrib) X(glPopAttrib) \
   X(glPushClientAttrib) X(glPopClientAttrib) X(glMatrixMode) X(glPushMatrix) X(glPopMatrix) \
   X(glLoadIdentity) X(glOrtho) X(glTexEnvi) X(glEnableClientState) \
-  X(glDisableClientState) X(glVertexPointer) X(glColorPointer) X(glTexCoordPointer) X(glStencilMask) X(glDepthRange) X(glGenBuffers) X(glDeleteBuffers) \
-  X(glBindBuffer) X(glBufferData) X(glGenQueries) X(glDeleteQueries) X(glBeginQuery) \
+  X(glDisableClientState) X(glVertexPointer) X(glColorPointer) X(glTexCoordPointer) X(glStencilMask) \
+  X(glBindBuffer) X(glGenQueries) X(glDeleteQueries) X(glBeginQuery) \
   X(glEndQuery) X(glGetQueryObjectuiv)
 
 struct GlFunctions {

@@ -76,6 +76,18 @@ constexpr GlUpload kWidened = {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
 
 BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
   const TextureSource &source = tmu.source;
+  // Programs that place textures at many addresses would grow the cache without end: past a
+  // bound, textures overwritten since their upload are dropped (a later use re-creates them).
+  if (entries_.size() > kMaxEntries) {
+    for (auto it = entries_.begin(); it != entries_.end();) {
+      if (it->stale) {
+        gl.glDeleteTextures(1, &it->name);
+        it = entries_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
   const LevelSize size = level_size(source.large_lod, source.aspect);
   Entry *entry = nullptr;
   for (Entry &candidate : entries_) {

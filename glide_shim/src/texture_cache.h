@@ -23,6 +23,7 @@ class TextureCache {
   void release(const GlFunctions &gl);
 
  private:
+  static constexpr std::size_t kMaxEntries = 64;
   struct Entry {
     TextureSource source;
     unsigned name = 0;
