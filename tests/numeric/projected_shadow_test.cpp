@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 namespace {
@@ -273,6 +274,53 @@ TEST_F(ProjectedShadowTest, FightersShadowTheRingAndEachOther) {
     EXPECT_GT(count(mask, coverage(scene, gs::FightScene::kFighters[1])), 20)
         << "time " << time << ": red's shadow misses blue";
   }
+}
+
+TEST_F(ProjectedShadowTest, EachFighterCastsAShadowOnTheRing) {
+  // Each fighter's own shadow: rendered with only that fighter casting, the ring is darkened
+  // somewhere beyond its feet, away from the light.
+  gs::FightScene fight(kWidth, kHeight, 128);
+  gs::ProjectedShadowOptions options;
+  options.size = 128;
+  for (int fighter = 0; fighter < 2; ++fighter) {
+    gs::Scene scene = fight.at(1.0f);
+    scene.objects[gs::FightScene::kFighters[1 - fighter]].casts_shadow = false;
+    gs::ShadowFrame frame;
+    const std::vector<bool> mask = shadow_mask(scene, options, &frame);
+    ASSERT_EQ(frame.jobs.size(), 1u);
+    EXPECT_GT(count(mask, coverage(scene, gs::FightScene::kRing)), 200) << "fighter " << fighter;
+  }
+}
+
+TEST_F(ProjectedShadowTest, AutoSizeFollowsTheCastersSizeOnScreen) {
+  // The article's LOD idea: a caster far from the camera gets a smaller texture.
+  gs::Scene scene = box_over_floor();
+  gs::ProjectedShadowOptions options;
+  options.auto_size = true;
+  const gs::LightView near_view = gs::fit_light_view(scene, 1, 0, options);
+  scene.camera.position *= 4.0f;
+  const gs::LightView far_view = gs::fit_light_view(scene, 1, 0, options);
+  EXPECT_LT(far_view.size, near_view.size);
+  EXPECT_GE(far_view.size, 32);
+}
+
+TEST_F(ProjectedShadowTest, DistanceAlphaFadesTheShadowWithTheReceiversDistance) {
+  // Iterated alpha as a per-vertex function of the distance to the light: a floor farther below
+  // the caster gets a lighter shadow than with the constant alpha 170.
+  gs::Scene scene = box_over_floor();
+  scene.objects[1].model_to_world[3].y = 5.0f;  // the box high up, far above the floor
+  gs::ProjectedShadowOptions constant, distance;
+  distance.alpha = gs::ShadowAlpha::Distance;
+  const std::vector<bool> shadow = shadow_mask(scene, constant);
+  auto brightness_in_shadow = [&](const gs::ProjectedShadowOptions &options) {
+    gs::render_projected_shadows(scene, options, false);
+    const std::vector<FxU16> frame = back_buffer();
+    long sum = 0;
+    for (std::size_t i = 0; i < frame.size(); ++i) sum += shadow[i] ? (frame[i] >> 5 & 0x3F) : 0;
+    return sum;
+  };
+  EXPECT_GT(count(shadow, shadow), 200);
+  EXPECT_GT(brightness_in_shadow(distance), brightness_in_shadow(constant));
 }
 
 TEST_F(ProjectedShadowTest, FighterNearerTheLightGetsNoShadowFromTheOther) {
