@@ -24,6 +24,7 @@ glm::vec3 shade_vertex(const Scene &scene, const glm::vec3 &world, const glm::ve
                        const glm::vec3 &albedo) {
   glm::vec3 light_sum = scene.ambient;
   for (const SpotLight &light : scene.lights) {
+    if (light.is_projector()) continue;  // it lights through its slide pass only
     const glm::vec3 to_light = glm::normalize(light.position - world);
     const float diffuse = std::max(0.0f, glm::dot(normal, to_light));
     light_sum += light.color * (diffuse * spot_factor(light, world));

@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 namespace gs {
 namespace {
@@ -86,6 +87,7 @@ struct Caster {
 
 // A receiver triangle facing the light, with its plane and edges ready for clipping.
 struct ReceiverTriangle {
+  std::uint32_t index = 0;          // into the object's mesh.triangles
   std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
   glm::vec3 normal{0.0f};           // world, unit, on the light's side
   float offset = 0.0f;              // dot(normal, p) of the plane's points
@@ -129,11 +131,13 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const SpotLight
   }
   Receiver receiver;
   receiver.object = index;
-  for (const glm::uvec3 &t : object.mesh.triangles) {
+  for (std::size_t k = 0; k < object.mesh.triangles.size(); ++k) {
+    const glm::uvec3 &t = object.mesh.triangles[k];
     // Lighting is per vertex (Gouraud): with the light's factor zero at all three corners it
     // adds nothing anywhere on the triangle, so there is nothing for a shadow to take away.
     if (!in_cone[t.x] && !in_cone[t.y] && !in_cone[t.z]) continue;
     ReceiverTriangle r;
+    r.index = static_cast<std::uint32_t>(k);
     r.corner = {lit.world[t.x], lit.world[t.y], lit.world[t.z]};
     const glm::vec3 cross = glm::cross(r.corner[1] - r.corner[0], r.corner[2] - r.corner[0]);
     const float length = glm::length(cross);
@@ -214,6 +218,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
   SmallPolygon polygon, scratch;
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const SpotLight &light = scene.lights[l];
+    if (light.is_projector()) continue;  // slides cast no shadows
     const glm::mat4 light_view = light_view_matrix(light);
     std::vector<Caster> casters;
     std::vector<Receiver> receivers;
@@ -248,7 +253,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
             if (polygon.n < 3) continue;
             out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
                                     static_cast<std::uint32_t>(polygon.n),
-                                    static_cast<std::uint32_t>(receiver.object)});
+                                    static_cast<std::uint32_t>(receiver.object), r.index});
             out.vertices.insert(out.vertices.end(), polygon.v.begin(),
                                 polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
           }
@@ -268,23 +273,44 @@ namespace {
 //     in the depth buffer and darkens the pixel;
 //   - the seal, kSealCodes nearer again, at alpha 0 (the colour is left as it is): it writes a
 //     depth that every later cover on that pixel, lying on the same plane, fails by kSealCodes.
-// A single level (cover only, depth writes on) is not enough: two polygons on one plane are
-// interpolated from different vertices, each snapped to 1/16 pixel, so at a pixel they both
-// cover either may be the nearer by a few codes, and about half the overlap would darken twice.
+// A single level (the cover with depth writes on) is not enough: two polygons on one plane would
+// have to interpolate exactly the same depth at a pixel they share for the second to fail, and
+// the rounding of their different vertices makes either one the nearer as often as not.
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
 // Each light gets its own band above the previous one's seals, so its covers pass them.
-constexpr float kCoverCodes = 8.0f;
-constexpr float kSealCodes = 16.0f;
+constexpr float kCoverCodes = 1.0f;
+constexpr float kSealCodes = 2.0f;
 constexpr float kLightBandCodes = kCoverCodes + kSealCodes;
 
 float nearer(float oow, float codes) { return oow * std::exp2(codes / 4096.0f); }
 
-// Every light's polygons, flat `color` over the back buffer. The frame's depth buffer must hold
-// the scene (and at most `first_band` bands of earlier covers and seals).
+// The Voodoo's 12.4 screen coordinates: what the rasteriser uses of a vertex's x and y.
+float snap(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
+
+// The depth (oow) a triangle's screen vertices give across the screen once snapped, which is what
+// the rasteriser interpolates: oow = a x + b y + c, in Glide screen pixels.
+struct DepthPlane {
+  double a = 0.0, b = 0.0, c = 0.0;
+  double at(float x, float y) const { return a * x + b * y + c; }
+};
+
+bool depth_plane(const GrVertex &p, const GrVertex &q, const GrVertex &r, DepthPlane &plane) {
+  const double px = snap(p.x), py = snap(p.y);
+  const double qx = snap(q.x) - px, qy = snap(q.y) - py, rx = snap(r.x) - px, ry = snap(r.y) - py;
+  const double qw = static_cast<double>(q.oow) - p.oow, rw = static_cast<double>(r.oow) - p.oow;
+  const double det = qx * ry - rx * qy;
+  if (det == 0.0) return false;  // edge-on: the scene pass drew nothing of it either
+  plane.a = (qw * ry - rw * qy) / det;
+  plane.b = (rw * qx - qw * rx) / det;
+  plane.c = p.oow - plane.a * px - plane.b * py;
+  return true;
+}
+
+// Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
+// buffer, whose depth buffer holds the scene pass's surfaces.
 void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
-                          const PlanarShadows &shadows, GrColor_t color, bool full_alpha,
-                          float first_band) {
+                          const PlanarShadows &shadows, GrColor_t color, bool opaque) {
   grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
   grDepthBufferFunction(GR_CMP_LESS);
   grDepthMask(FXTRUE);
@@ -300,8 +326,8 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
   std::vector<GrVertex> screen;
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
-    const float alpha = full_alpha ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
-    const float cover = (first_band + static_cast<float>(l)) * kLightBandCodes + kCoverCodes;
+    const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
+    const float cover = static_cast<float>(l) * kLightBandCodes + kCoverCodes;
     for (const ShadowPolygons::Polygon &p : light.polygons) {
       polygon.clear();
       for (std::uint32_t i = 0; i < p.count; ++i) {
@@ -309,6 +335,22 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       }
       project_camera_polygon(frame, scene, polygon, scratch, screen);
       if (screen.size() < 3) continue;
+      // On a receiver triangle the scene pass drew unclipped, the depth is taken from that
+      // triangle's own snapped vertices, so cover and receiver differ by kCoverCodes and not by
+      // the rounding of two sets of vertices; through a camera-clipped one the polygon's own
+      // oow is within that rounding, well inside kCoverCodes but for grazing surfaces.
+      const ProjectedObject &receiver = frame.objects[p.receiver];
+      const glm::uvec3 &t = receiver.object->mesh.triangles[p.triangle];
+      DepthPlane plane;
+      if ((receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0) {
+        if (!depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane)) {
+          continue;
+        }
+        for (GrVertex &v : screen) {
+          v.x = snap(v.x), v.y = snap(v.y);
+          v.oow = static_cast<float>(plane.at(v.x, v.y));
+        }
+      }
       for (GrVertex &v : screen) v.oow = nearer(v.oow, cover), v.a = alpha;
       draw_fan(screen);
       for (GrVertex &v : screen) v.oow = nearer(v.oow, kSealCodes), v.a = 0.0f;
@@ -340,7 +382,7 @@ class PlanarShadow final : public ShadowTechnique {
     frame_ = project_scene(scene);
     render_scene(scene, frame_);
     finish_step("2 render the scene");
-    draw_shadow_polygons(scene, frame_, shadows_, 0x00000000u, false, 0.0f);
+    draw_shadow_polygons(scene, frame_, shadows_, 0x00000000u, false);
     finish_step("3 draw the shadow polygons");
     report.total_ms = elapsed_ms(frame_start);
     if (shadows_.pairs_skipped > 0) {
@@ -355,11 +397,15 @@ class PlanarShadow final : public ShadowTechnique {
   }
 
   void render_mask(const Scene &scene) override {
+    // Step 3 left its seals in the depth buffer, which its covers would fail. The scene pass's
+    // depth is drawn again (colour writes off; the same vertices give the same depths), so the
+    // covers pass exactly where they darkened the frame.
+    grColorMask(FXFALSE, FXFALSE);
+    render_scene(scene, frame_);
+    grColorMask(FXTRUE, FXFALSE);
     grDepthMask(FXFALSE);
-    grBufferClear(0, 0, 0);  // colour only: the depth buffer keeps the frame's surfaces
-    // White at full alpha, in bands in front of the seals the frame left.
-    draw_shadow_polygons(scene, frame_, shadows_, 0xFFFFFFFFu, true,
-                         static_cast<float>(shadows_.lights.size()));
+    grBufferClear(0, 0, 0);  // colour only
+    draw_shadow_polygons(scene, frame_, shadows_, 0xFFFFFFFFu, true);  // white, opaque
   }
 
  private:

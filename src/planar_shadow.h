@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
 namespace gs {
@@ -17,6 +16,8 @@ namespace gs {
 // Step 1 stops clipping after this many caster/receiver triangle pairs per frame (pairs that
 // survive the cheap rejections: cone, facing, bounding boxes in the light's view, plane side),
 // keeping the frame's cost bounded; the rest of the pairs cast nothing and a warning says so.
+// The fighter scene clips about 7,000 pairs a frame in some 2 ms; a frame at the limit takes of
+// the order of 0.1 s.
 constexpr std::size_t kMaxClippedPairs = 400000;
 
 // One light's shadow polygons. Each is convex, lies in its receiver triangle's plane, and is
@@ -25,6 +26,7 @@ struct ShadowPolygons {
   struct Polygon {
     std::uint32_t first = 0, count = 0;  // a run of `vertices`
     std::uint32_t receiver = 0;          // index into scene.objects
+    std::uint32_t triangle = 0;          // index into that object's mesh.triangles
   };
   std::vector<glm::vec3> vertices;  // world space
   std::vector<Polygon> polygons;

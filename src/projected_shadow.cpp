@@ -419,6 +419,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   grRenderBuffer(GR_BUFFER_BACKBUFFER);
   FxU32 next_address = grTexMinAddress(GR_TMU0);
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+    if (scene.lights[light].is_projector()) continue;  // slides cast no shadows
     for (std::size_t caster = 0; caster < scene.objects.size(); ++caster) {
       if (!scene.objects[caster].casts_shadow) continue;
       auto start = Clock::now();

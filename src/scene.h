@@ -25,6 +25,10 @@ struct SpotLight {
   glm::vec3 color{1.0f};
   float shadow_strength = 170.0f / 255.0f;  // the article's iterated alpha 170
   int shadow_size = 256;                    // shadow texture side, texels
+  // Non-empty: a slide projector (Segal et al. 1992) showing this built-in slide (see
+  // slide_projector.h); it lights only through its slide and casts no shadow.
+  std::string slide;
+  bool is_projector() const { return !slide.empty(); }
 };
 
 struct Camera {

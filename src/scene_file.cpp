@@ -4,6 +4,7 @@
 #include "fighter.h"
 #include "ring.h"
 #include "scene.h"
+#include "slide_projector.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -261,7 +262,7 @@ void read_camera(const Field &f, Camera &camera) {
 
 SpotLight read_light(const Field &f) {
   f.require_object_with_keys(
-      {"position", "target", "cone_degrees", "color", "shadow_strength", "shadow_size"});
+      {"position", "target", "cone_degrees", "color", "shadow_strength", "shadow_size", "slide"});
   SpotLight light;
   light.position = position(f["position"]);
   light.target = position(f["target"]);
@@ -279,6 +280,12 @@ SpotLight read_light(const Field &f) {
     if (!is_integer || v < 32 || v > 512 || (v & (v - 1)) != 0)
       size.fail("must be a power of two in 32..512");
     light.shadow_size = static_cast<int>(v);
+  }
+  if (f.has("slide")) {
+    const Field slide = f["slide"];
+    if (!slide.value.is_string() || !is_slide_pattern(slide.value.get<std::string>()))
+      slide.fail("must be one of the built-in slides: checker, rings, grid");
+    light.slide = slide.value.get<std::string>();
   }
   return light;
 }

@@ -2,6 +2,7 @@
 #include "scene_pass.h"
 
 #include "lighting.h"
+#include "slide_projector.h"
 
 #include <glideutl.h>
 
@@ -111,6 +112,10 @@ void set_scene_state() {
 }
 
 void render_scene(const Scene &scene, const FrameGeometry &frame) {
+  if (has_slide_projectors(scene)) {
+    render_scene_with_projectors(scene, frame);
+    return;
+  }
   set_scene_state();
   const glm::vec3 background = glm::clamp(scene.background, 0.0f, 1.0f) * 255.0f;
   const GrColor_t clear = (static_cast<GrColor_t>(background.r) << 16) |

@@ -18,84 +18,21 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace gs {
-
-EdgeMesh build_edge_mesh(const Mesh &mesh) {
-  EdgeMesh result;
-  const std::size_t n = mesh.positions.size();
-  for (const glm::vec3 &p : mesh.positions) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return result;
-  }
-  std::vector<glm::uint> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](glm::uint a, glm::uint b) {
-    const glm::vec3 &p = mesh.positions[a], &q = mesh.positions[b];
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  });
-  std::vector<glm::uint> welded(n);
-  for (glm::uint i : order) {
-    if (result.positions.empty() || result.positions.back() != mesh.positions[i]) {
-      result.positions.push_back(mesh.positions[i]);
-    }
-    welded[i] = static_cast<glm::uint>(result.positions.size() - 1);
-  }
-  for (const glm::uvec3 &t : mesh.triangles) {
-    if (t.x >= n || t.y >= n || t.z >= n) return EdgeMesh{};
-    const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
-    // Two corners welded together: no area, and its edges (a->a, a->b, b->a) cancel out.
-    if (w.x == w.y || w.y == w.z || w.z == w.x) continue;
-    const auto index = static_cast<glm::uint>(result.triangles.size());
-    result.triangles.push_back(w);
-    result.edges.insert(result.edges.end(), {{w.x, w.y, index}, {w.y, w.z, index}, {w.z, w.x, index}});
-  }
-  const auto undirected = [](const glm::uvec3 &e) {
-    return std::make_pair(std::min(e.x, e.y), std::max(e.x, e.y));
-  };
-  std::sort(result.edges.begin(), result.edges.end(),
-            [&](const glm::uvec3 &a, const glm::uvec3 &b) { return undirected(a) < undirected(b); });
-  result.closed = true;
-  for (std::size_t i = 0, j = 0; i < result.edges.size(); i = j) {
-    int balance = 0;  // walks low -> high minus walks high -> low
-    for (j = i; j < result.edges.size() && undirected(result.edges[j]) == undirected(result.edges[i]); ++j) {
-      balance += result.edges[j].x < result.edges[j].y ? 1 : -1;
-    }
-    if (balance != 0) result.closed = false;
-  }
-  return result;
-}
-
-std::vector<bool> light_facing(const EdgeMesh &mesh, const std::vector<glm::vec3> &world,
-                               const glm::vec3 &light) {
-  std::vector<bool> facing(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const glm::vec3 &a = world[mesh.triangles[t].x], &b = world[mesh.triangles[t].y],
-                    &c = world[mesh.triangles[t].z];
-    facing[t] = glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;  // edge-on counts as away
-  }
-  return facing;
-}
-
-std::vector<SilhouetteEdge> find_silhouette(const EdgeMesh &mesh, const std::vector<bool> &facing) {
-  std::vector<SilhouetteEdge> silhouette;
-  const auto undirected = [](const glm::uvec3 &e) {
-    return std::make_pair(std::min(e.x, e.y), std::max(e.x, e.y));
-  };
-  // Per undirected edge, the light-facing walks low -> high minus those high -> low: 0 where both
-  // sides face the same way; where several parts meet at one edge, each unmatched walk counts.
-  for (std::size_t i = 0, j = 0; i < mesh.edges.size(); i = j) {
-    const auto [low, high] = undirected(mesh.edges[i]);
-    int walks = 0;
-    for (j = i; j < mesh.edges.size() && undirected(mesh.edges[j]) == std::make_pair(low, high); ++j) {
-      if (facing[mesh.edges[j].z]) walks += mesh.edges[j].x < mesh.edges[j].y ? 1 : -1;
-    }
-    for (; walks > 0; --walks) silhouette.push_back({low, high});
-    for (; walks < 0; ++walks) silhouette.push_back({high, low});
-  }
-  return silhouette;
-}
-
 namespace {
+
+std::pair<glm::uint, glm::uint> undirected(const glm::uvec3 &edge) {
+  return {std::min(edge.x, edge.y), std::max(edge.x, edge.y)};
+}
+
+// The end of the run of `edges` (sorted by undirected edge) that starts at `first`.
+std::size_t end_of_edge(const std::vector<glm::uvec3> &edges, std::size_t first) {
+  std::size_t end = first + 1;
+  while (end < edges.size() && undirected(edges[end]) == undirected(edges[first])) ++end;
+  return end;
+}
 
 // Points at infinity land at NDC depth 1 - kInfinityEpsilon instead of 1 (Kwoon, equations 3-7),
 // so rounding cannot push the volumes' far ends past the far clip plane: about 8 steps of the
@@ -227,7 +164,8 @@ void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light, b
     for (const SilhouetteEdge &e : find_silhouette(caster.mesh, facing)) {
       // The side walks the edge against the light-facing triangle, as its neighbour on the
       // volume's surface must for both to face outward.
-      out.insert(out.end(), {on(e.to), on(e.from), beyond(e.from), on(e.to), beyond(e.from), beyond(e.to)});
+      out.insert(out.end(), {on(e.to), on(e.from), beyond(e.from),
+                             on(e.to), beyond(e.from), beyond(e.to)});
     }
     if (!caps) continue;
     for (std::size_t t = 0; t < caster.mesh.triangles.size(); ++t) {
@@ -300,11 +238,12 @@ void set_frame_state(const GlApi &gl, const FrameData &frame) {
   gl.glEnableClientState(GL_COLOR_ARRAY);
 }
 
-// How much of the light reaches a vertex before any occluder: the diffuse and cone factors of
-// shade_vertex.
-float light_reach(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
-  const float facing = glm::dot(normal, glm::normalize(light.position - world));
-  return std::max(0.0f, facing) * spot_factor(light, world);
+// A scene holding only `light` and no ambient: shade_vertex then gives that light's direct term.
+Scene light_alone(const SpotLight &light) {
+  Scene scene;
+  scene.ambient = glm::vec3(0.0f);
+  scene.lights = {light};
+  return scene;
 }
 
 class StencilVolumeShadow final : public ShadowTechnique {
@@ -338,6 +277,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
     finish_step(1);
     std::vector<glm::vec4> volumes;
     for (const SpotLight &light : scene.lights) {
+      if (light.is_projector()) continue;  // slides cast no shadows
       const bool z_fail = uses_z_fail(scene, light);  // 2
       build_volumes(frame.casters, light.position, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
@@ -364,13 +304,18 @@ class StencilVolumeShadow final : public ShadowTechnique {
     gl_.glClear(GL_COLOR_BUFFER_BIT);  // colour only: depth keeps the frame's visible surfaces
     std::vector<glm::vec4> volumes;
     for (const SpotLight &light : scene.lights) {
+      if (light.is_projector()) continue;  // slides cast no shadows
       const bool z_fail = uses_z_fail(scene, light);
       build_volumes(frame.casters, light.position, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
-      // White where this light would reach the visible surface (alpha > 0) but the count is not 0.
+      // White where this light would reach the visible surface (alpha > 0: what it adds to a
+      // white surface, so cone and facing as in shade_vertex) but the count is not 0.
+      const Scene alone = light_alone(light);
       for (Surface &surface : frame.surfaces) {
         for (std::size_t i = 0; i < surface.world.size(); ++i) {
-          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, light_reach(light, surface.world[i], surface.normal[i]));
+          const glm::vec3 reach =
+              shade_vertex(alone, surface.world[i], surface.normal[i], glm::vec3(1.0f));
+          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, std::max({reach.r, reach.g, reach.b}));
         }
       }
       gl_.glEnable(GL_ALPHA_TEST);
@@ -418,7 +363,6 @@ class StencilVolumeShadow final : public ShadowTechnique {
     gl_.glDepthFunc(GL_LESS);
     Scene ambient_only;
     ambient_only.ambient = scene.ambient;
-    ambient_only.lights.clear();
     for (Surface &surface : frame.surfaces) {
       for (std::size_t i = 0; i < surface.world.size(); ++i) {
         surface.color[i] = glm::vec4(shade_vertex(ambient_only, surface.world[i], surface.normal[i],
@@ -432,14 +376,13 @@ class StencilVolumeShadow final : public ShadowTechnique {
   // Step 3: this light's direct term added where the stencil count is 0 (and, on objects that
   // receive no shadow, everywhere). Casters shadow their own far sides and whatever of
   // themselves lies in their volume, which is physically right; their lit faces are kept lit by
-  // count_volumes' depth test.
+  // count_volumes' depth test. A caster drawn from a simplified shadow_mesh (the fighters) is
+  // not its volume's exact surface, so a few pixels near its silhouette may darken.
   void draw_lit_pass(const SpotLight &light, FrameData &frame) {
-    Scene one_light;
-    one_light.ambient = glm::vec3(0.0f);
-    one_light.lights = {light};
+    const Scene alone = light_alone(light);
     for (Surface &surface : frame.surfaces) {
       for (std::size_t i = 0; i < surface.world.size(); ++i) {
-        surface.color[i] = glm::vec4(shade_vertex(one_light, surface.world[i], surface.normal[i],
+        surface.color[i] = glm::vec4(shade_vertex(alone, surface.world[i], surface.normal[i],
                                                   surface.object->mesh.colors[i]), 1.0f);
       }
     }
@@ -460,11 +403,85 @@ class StencilVolumeShadow final : public ShadowTechnique {
 
 }  // namespace
 
+EdgeMesh build_edge_mesh(const Mesh &mesh) {
+  EdgeMesh result;
+  const std::size_t n = mesh.positions.size();
+  for (const glm::vec3 &p : mesh.positions) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return result;
+  }
+  std::vector<glm::uint> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](glm::uint a, glm::uint b) {
+    const glm::vec3 &p = mesh.positions[a], &q = mesh.positions[b];
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  });
+  std::vector<glm::uint> welded(n);
+  for (glm::uint i : order) {
+    if (result.positions.empty() || result.positions.back() != mesh.positions[i]) {
+      result.positions.push_back(mesh.positions[i]);
+    }
+    welded[i] = static_cast<glm::uint>(result.positions.size() - 1);
+  }
+  for (const glm::uvec3 &t : mesh.triangles) {
+    if (t.x >= n || t.y >= n || t.z >= n) return EdgeMesh{};
+    const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
+    // Two corners welded together: no area, and its edges (a->a, a->b, b->a) cancel out.
+    if (w.x == w.y || w.y == w.z || w.z == w.x) continue;
+    const auto index = static_cast<glm::uint>(result.triangles.size());
+    result.triangles.push_back(w);
+    for (const glm::uvec3 &edge : {glm::uvec3(w.x, w.y, index), glm::uvec3(w.y, w.z, index),
+                                   glm::uvec3(w.z, w.x, index)}) {
+      result.edges.push_back(edge);
+    }
+  }
+  std::sort(result.edges.begin(), result.edges.end(),
+            [](const glm::uvec3 &a, const glm::uvec3 &b) { return undirected(a) < undirected(b); });
+  result.closed = true;
+  for (std::size_t first = 0, end = 0; first < result.edges.size(); first = end) {
+    end = end_of_edge(result.edges, first);
+    int balance = 0;  // walks low -> high minus walks high -> low
+    for (std::size_t k = first; k < end; ++k) {
+      balance += result.edges[k].x < result.edges[k].y ? 1 : -1;
+    }
+    if (balance != 0) result.closed = false;
+  }
+  return result;
+}
+
+std::vector<bool> light_facing(const EdgeMesh &mesh, const std::vector<glm::vec3> &world,
+                               const glm::vec3 &light) {
+  std::vector<bool> facing(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const glm::vec3 &a = world[mesh.triangles[t].x], &b = world[mesh.triangles[t].y],
+                    &c = world[mesh.triangles[t].z];
+    facing[t] = glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;  // edge-on counts as away
+  }
+  return facing;
+}
+
+std::vector<SilhouetteEdge> find_silhouette(const EdgeMesh &mesh, const std::vector<bool> &facing) {
+  std::vector<SilhouetteEdge> silhouette;
+  // Per undirected edge, the light-facing walks low -> high minus those high -> low: 0 where both
+  // sides face the same way; where several parts meet at one edge, each unmatched walk counts.
+  for (std::size_t first = 0, end = 0; first < mesh.edges.size(); first = end) {
+    end = end_of_edge(mesh.edges, first);
+    const auto [low, high] = undirected(mesh.edges[first]);
+    int walks = 0;
+    for (std::size_t k = first; k < end; ++k) {
+      if (facing[mesh.edges[k].z]) walks += mesh.edges[k].x < mesh.edges[k].y ? 1 : -1;
+    }
+    for (; walks > 0; --walks) silhouette.push_back({low, high});
+    for (; walks < 0; ++walks) silhouette.push_back({high, low});
+  }
+  return silhouette;
+}
+
 bool near_plane_may_be_in_shadow(const Scene &scene, const SpotLight &light) {
   const Camera &camera = scene.camera;
   const glm::vec3 forward = glm::normalize(camera.target - camera.position);
   const float half_height = camera.near_plane * std::tan(glm::radians(camera.fov_degrees) * 0.5f);
-  const float half_width = half_height * static_cast<float>(scene.width) / static_cast<float>(scene.height);
+  const float half_width =
+      half_height * static_cast<float>(scene.width) / static_cast<float>(scene.height);
   // A sphere around the near-plane rectangle, large enough to hold the camera position too.
   const Sphere near_plane{camera.position + forward * camera.near_plane,
                           std::sqrt(camera.near_plane * camera.near_plane +

@@ -2,7 +2,9 @@
 // scene pass alone) and the projected shadow texture (projected_shadow.h) in its two variants.
 #include "technique.h"
 
+#include "planar_shadow.h"
 #include "scene_pass.h"
+#include "stencil_volume_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>
@@ -55,7 +57,7 @@ class ProjectedTexture final : public ShadowTechnique {
 }  // namespace
 
 const std::vector<std::string> &technique_names() {
-  static const std::vector<std::string> names = {"projected", "projected-chroma", "none"};
+  static const std::vector<std::string> names = {"projected", "projected-chroma", "planar", "stencil-volume", "none"};
   return names;
 }
 
@@ -68,6 +70,8 @@ std::unique_ptr<ShadowTechnique> make_technique(const std::string &name,
     projected.chroma_key = name == "projected-chroma";
     return std::make_unique<ProjectedTexture>(projected);
   }
+  if (name == "planar") return make_planar_shadow(options);
+  if (name == "stencil-volume") return make_stencil_volume_shadow(options);
   error = "unknown technique '" + name + "'";
   return nullptr;
 }

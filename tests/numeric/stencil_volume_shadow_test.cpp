@@ -209,9 +209,12 @@ TEST_F(StencilVolumeShadowTest, CameraInsideAVolumeNeedsZFail) {
   Mask expected(floor.size());
   for (int y = 0; y < kHeight; ++y) {
     for (int x = 0; x < kWidth; ++x) {
-      const glm::vec2 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, 1.0f - (y + 0.5f) / kHeight * 2.0f);
-      const glm::vec4 a = to_world * glm::vec4(ndc, -1.0f, 1.0f), b = to_world * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 from = glm::vec3(a) / a.w, to = glm::vec3(b) / b.w;
+      const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / kWidth * 2.0f - 1.0f,
+                          1.0f - (static_cast<float>(y) + 0.5f) / kHeight * 2.0f);
+      const glm::vec4 near_point = to_world * glm::vec4(ndc, -1.0f, 1.0f);
+      const glm::vec4 far_point = to_world * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 from = glm::vec3(near_point) / near_point.w,
+                      to = glm::vec3(far_point) / far_point.w;
       if (to.y >= from.y) continue;  // looking up: no floor
       const glm::vec3 hit = from + (to - from) * (from.y / (from.y - to.y));
       const auto i = static_cast<std::size_t>(y * kWidth + x);
