@@ -47,7 +47,8 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
     world.object = &object;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(object.model_to_world)));
     for (std::size_t i = 0; i < object.mesh.positions.size(); ++i) {
-      world.position.push_back(glm::vec3(object.model_to_world * glm::vec4(object.mesh.positions[i], 1.0f)));
+      world.position.push_back(
+          glm::vec3(object.model_to_world * glm::vec4(object.mesh.positions[i], 1.0f)));
       world.normal.push_back(glm::normalize(normal_matrix * object.mesh.normals[i]));
     }
     meshes.push_back(std::move(world));
@@ -56,7 +57,8 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
 }
 
 // A light's frustum: square, its full angle the cone's (the beam's circle is inscribed), near
-// and far fitted to the scene: far beyond every vertex, near before every caster's vertex.
+// and far fitted to the scene: far beyond every vertex, near before every caster's vertex in
+// front of the light. A receiver nearer than that has r < 0, which compares as lit.
 struct LightFrustum {
   glm::mat4 view{1.0f};        // world to light view
   glm::mat4 projection{1.0f};  // light view to light clip
@@ -75,12 +77,13 @@ LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotL
   }
   const glm::vec3 axis = light.target - light.position;
   if (!(glm::length(axis) > 1e-6f)) {
-    frustum.problem = name + " has its target at its position: no depth-map frustum, so the "
+    frustum.problem = name +
+                      " has its target at its position: no depth-map frustum, so the "
                       "light casts no shadow";
     return frustum;
   }
-  const glm::vec3 up = std::abs(glm::normalize(axis).y) > 0.99f ? glm::vec3(0, 0, 1)
-                                                                : glm::vec3(0, 1, 0);
+  const glm::vec3 up =
+      std::abs(glm::normalize(axis).y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
   frustum.view = glm::lookAt(light.position, light.target, up);
   float farthest = 0.0f, nearest_caster = INFINITY;  // light-view depth, metres
   for (const WorldMesh &mesh : meshes) {
@@ -90,10 +93,12 @@ LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotL
       if (mesh.object->casts_shadow) nearest_caster = std::min(nearest_caster, depth);
     }
   }
-  // A 1000:1 range at the most: 24 bits then still resolve about a millimetre at 10 m.
+  // A 1000:1 range at the most: 24 bits then still resolve about a millimetre at 10 m. (With
+  // no caster the map stays empty and any near plane will do.)
   const float far_plane = std::max(farthest, 1e-3f) * 1.01f;
-  const float near_plane = std::max(nearest_caster * 0.99f, far_plane * 1e-3f);
-  frustum.projection = glm::perspective(glm::radians(light.cone_degrees), 1.0f, near_plane, far_plane);
+  const float near_plane = std::clamp(nearest_caster * 0.99f, far_plane * 1e-3f, far_plane * 0.5f);
+  frustum.projection =
+      glm::perspective(glm::radians(light.cone_degrees), 1.0f, near_plane, far_plane);
   return frustum;
 }
 
@@ -113,8 +118,8 @@ class Passes {
   Passes &operator=(const Passes &) = delete;
 
   void depth_from_lights(std::vector<std::string> &warnings);  // step 1
-  void ambient_pass();                                          // step 2
-  void lit_passes();                                            // step 3
+  void ambient_pass();                                         // step 2
+  void lit_passes();                                           // step 3
   // The mask over the frame's depth buffer (after steps 1-3 of the same scene).
   void mask_passes();
 
@@ -165,12 +170,10 @@ Passes::~Passes() {
 }
 
 void Passes::depth_from_lights(std::vector<std::string> &warnings) {
-  const GLsizei side = options_.projected.size;
   gl_.glGenFramebuffers(1, &framebuffer_);
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   gl_.glDrawBuffer(GL_NONE);
   gl_.glReadBuffer(GL_NONE);
-  gl_.glViewport(0, 0, side, side);
   gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
   gl_.glDepthMask(GL_TRUE);
@@ -190,6 +193,8 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
       warnings.push_back(frustum.problem);
       continue;
     }
+    const GLsizei side =
+        options_.projected.size > 0 ? options_.projected.size : scene_.lights[light].shadow_size;
     GLuint map = 0;
     gl_.glGenTextures(1, &map);
     gl_.glBindTexture(GL_TEXTURE_2D, map);
@@ -205,18 +210,20 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
     gl_.glBindTexture(GL_TEXTURE_2D, 0);
     gl_.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
     if (gl_.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      warnings.push_back("light " + std::to_string(light) + ": a " + std::to_string(side) +
-                         "x" + std::to_string(side) + " depth texture cannot be rendered to, so "
-                         "the light casts no shadow");
+      const std::string size = std::to_string(side);
+      warnings.push_back("light " + std::to_string(light) + ": a " + size + "x" + size +
+                         " depth texture cannot be rendered to, so the light casts no shadow");
       gl_.glDeleteTextures(1, &map);
       continue;
     }
     maps_.back() = map;
+    gl_.glViewport(0, 0, side, side);
     gl_.glClear(GL_DEPTH_BUFFER_BIT);
     gl_.glMatrixMode(GL_PROJECTION);
     gl_.glLoadMatrixf(&frustum.projection[0][0]);
     gl_.glMatrixMode(GL_MODELVIEW);
     gl_.glLoadMatrixf(&frustum.view[0][0]);
+    // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
     for (const WorldMesh &mesh : meshes_) {
       if (!mesh.object->casts_shadow) continue;
       gl_.glVertexPointer(3, GL_FLOAT, 0, mesh.position.data());
@@ -260,8 +267,9 @@ void Passes::ambient_pass() {
   for (const WorldMesh &mesh : meshes_) {
     std::vector<glm::vec4> colors;
     for (std::size_t i = 0; i < mesh.position.size(); ++i) {
-      colors.emplace_back(shade_vertex(ambient_only, mesh.position[i], mesh.normal[i],
-                                       mesh.object->mesh.colors[i]), 1.0f);
+      colors.emplace_back(
+          shade_vertex(ambient_only, mesh.position[i], mesh.normal[i], mesh.object->mesh.colors[i]),
+          1.0f);
     }
     draw(mesh, colors);
   }
@@ -274,6 +282,7 @@ void Passes::lit_passes() {
   gl_.glEnable(GL_BLEND);
   gl_.glBlendFunc(GL_SRC_ALPHA, GL_ONE);  // adds the light x the lit fraction of the 2x2
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
+    if (scene_.lights[light].is_projector()) continue;  // slides light only through their pass
     Scene one_light;  // shade_vertex for this light alone, without the ambient
     one_light.ambient = glm::vec3(0.0f);
     one_light.lights = {scene_.lights[light]};
@@ -281,8 +290,9 @@ void Passes::lit_passes() {
     for (const WorldMesh &mesh : meshes_) {
       std::vector<glm::vec4> colors;
       for (std::size_t i = 0; i < mesh.position.size(); ++i) {
-        colors.emplace_back(shade_vertex(one_light, mesh.position[i], mesh.normal[i],
-                                         mesh.object->mesh.colors[i]), 1.0f);
+        colors.emplace_back(
+            shade_vertex(one_light, mesh.position[i], mesh.normal[i], mesh.object->mesh.colors[i]),
+            1.0f);
       }
       gl_.glActiveTexture(GL_TEXTURE0);
       if (maps_[light] != 0 && mesh.object->receives_shadow) {
@@ -303,10 +313,13 @@ void Passes::mask_passes() {
   gl_.glClear(GL_COLOR_BUFFER_BIT);  // colour only: the depth buffer keeps the frame's surfaces
   gl_.glDepthFunc(GL_EQUAL);
   gl_.glDepthMask(GL_FALSE);
-  // White where alpha = (light reaches the vertices) x (shadowed fraction) x (q gate) > 0.
+  // White where alpha = (light reaches the vertices) x (shadowed fraction) x (q gate) is over
+  // 2/255, half of 565's finest step: llvmpipe's percentage-closer lookup now and then reads an
+  // unshadowed point as a few thousandths shadowed (measured: under 1/256), which darkens nothing.
   gl_.glEnable(GL_ALPHA_TEST);
-  gl_.glAlphaFunc(GL_GREATER, 0.0f);
+  gl_.glAlphaFunc(GL_GREATER, 2.0f / 255.0f);
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
+    if (scene_.lights[light].is_projector()) continue;
     if (maps_[light] == 0) continue;
     const SpotLight &spot = scene_.lights[light];
     bind_shadow_units(light, GL_GREATER);  // the comparison inverted: 1 where in shadow
@@ -316,7 +329,8 @@ void Passes::mask_passes() {
       if (!mesh.object->receives_shadow) continue;
       std::vector<glm::vec4> colors;
       for (std::size_t i = 0; i < mesh.position.size(); ++i) {
-        colors.emplace_back(1.0f, 1.0f, 1.0f, reaches(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
+        colors.emplace_back(1.0f, 1.0f, 1.0f,
+                            reaches(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
       }
       draw(mesh, colors);
     }
@@ -326,6 +340,8 @@ void Passes::mask_passes() {
 }
 
 void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
+  // A light without a frustum keeps identity matrices: q = 1 everywhere, the gate open, and
+  // unit 0 is left disabled, so it lights without shadows.
   const LightFrustum &frustum = frustums_[light];
   const glm::mat4 light_clip = frustum.projection * frustum.view;  // world to light clip
   // S: light clip to texture coordinates, s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.

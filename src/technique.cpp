@@ -2,6 +2,7 @@
 // scene pass alone) and the projected shadow texture (projected_shadow.h) in its two variants.
 #include "technique.h"
 
+#include "depth_map_shadow.h"
 #include "planar_shadow.h"
 #include "scene_pass.h"
 #include "stencil_volume_shadow.h"
@@ -57,7 +58,8 @@ class ProjectedTexture final : public ShadowTechnique {
 }  // namespace
 
 const std::vector<std::string> &technique_names() {
-  static const std::vector<std::string> names = {"projected", "projected-chroma", "planar", "stencil-volume", "none"};
+  static const std::vector<std::string> names = {"projected", "projected-chroma", "planar", "depth-map",
+                                                  "stencil-volume", "none"};
   return names;
 }
 
@@ -72,6 +74,7 @@ std::unique_ptr<ShadowTechnique> make_technique(const std::string &name,
   }
   if (name == "planar") return make_planar_shadow(options);
   if (name == "stencil-volume") return make_stencil_volume_shadow(options);
+  if (name == "depth-map") return make_depth_map_shadow(options);
   error = "unknown technique '" + name + "'";
   return nullptr;
 }
