@@ -7,35 +7,20 @@
 #include <glide.h>
 #include <glide_shim.h>
 #include <gtest/gtest.h>
+
+#include "technique_fixture.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
 
 int green6(FxU16 p) { return (p >> 5) & 0x3F; }  // 565 green, the finest channel
 
-class DepthMapShadowTest : public ::testing::Test {
+class DepthMapShadowTest : public TechniqueTest {
  protected:
-  void SetUp() override {
-    grGlideInit();
-    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
-    ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
-                             GR_ORIGIN_UPPER_LEFT, 2, 1));
-    glideShimClearError();
-  }
-  void TearDown() override {
-    EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
-    grGlideShutdown();
-  }
 
-  static std::vector<FxU16> back_buffer() {
-    std::vector<FxU16> pixels(kWidth * kHeight);
-    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, pixels.data());
-    return pixels;
-  }
 
   static gs::TechniqueOptions options(bool linear = true) {
     gs::TechniqueOptions o;
@@ -69,29 +54,7 @@ class DepthMapShadowTest : public ::testing::Test {
     return mask_of(*gs::make_depth_map_shadow(options(linear)), scene);
   }
 
-  // Pixels where object `index` is the visible surface: the scene drawn with only that object
-  // white and the others black, without shadows.
-  static std::vector<bool> coverage(gs::Scene scene, std::size_t index) {
-    scene.lights.clear();
-    scene.ambient = glm::vec3(1.0f);
-    scene.background = glm::vec3(0.0f);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      scene.objects[i].mesh.set_color(glm::vec3(i == index ? 1.0f : 0.0f));
-    }
-    gs::render_scene(scene, gs::project_scene(scene));
-    std::vector<bool> covered;
-    for (FxU16 p : back_buffer()) covered.push_back(p != 0);
-    return covered;
-  }
 
-  static int count(const std::vector<bool> &a) {
-    return static_cast<int>(std::count(a.begin(), a.end(), true));
-  }
-  static int count(const std::vector<bool> &a, const std::vector<bool> &b) {
-    int n = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] && b[i];
-    return n;
-  }
 
   // The pixel a world point lands on (Glide screen, rows from the top).
   static std::size_t pixel_at(const gs::Scene &scene, const glm::vec3 &world) {
@@ -101,28 +64,7 @@ class DepthMapShadowTest : public ::testing::Test {
     return static_cast<std::size_t>(static_cast<int>(v.y) * kWidth + static_cast<int>(v.x));
   }
 
-  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
-    gs::SceneObject o;
-    o.name = name;
-    o.mesh = std::move(mesh);
-    o.model_to_world = glm::translate(glm::mat4(1.0f), at);
-    return o;
-  }
 
-  // A 1 m box 1 m above a 10 m floor, the light straight above, the camera looking down at 45.
-  static gs::Scene box_over_floor() {
-    gs::Scene scene;
-    scene.width = kWidth, scene.height = kHeight;
-    scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
-    scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
-    gs::SpotLight light;
-    light.position = {0, 8, 0};
-    light.target = {0, 0, 0};
-    scene.lights.push_back(light);
-    scene.camera.position = {0, 6, 6};
-    scene.camera.target = {0, 0.5f, 0};
-    return scene;
-  }
 };
 
 TEST_F(DepthMapShadowTest, ReportsItsThreeSteps) {

@@ -8,6 +8,8 @@
 #include <glide.h>
 #include <glide_shim.h>
 #include <gtest/gtest.h>
+
+#include "technique_fixture.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -15,24 +17,10 @@
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
 
-class ProjectedShadowTest : public ::testing::Test {
+class ProjectedShadowTest : public TechniqueTest {
  protected:
-  void SetUp() override {
-    grGlideInit();
-    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
-    ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
-                             GR_ORIGIN_UPPER_LEFT, 2, 1));
-    glideShimClearError();
-  }
-  void TearDown() override { grGlideShutdown(); }
 
-  static std::vector<FxU16> back_buffer() {
-    std::vector<FxU16> pixels(kWidth * kHeight);
-    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, pixels.data());
-    return pixels;
-  }
 
   // Which pixels the technique darkened (white in render_shadow_mask).
   static std::vector<bool> shadow_mask(const gs::Scene &scene, const gs::ProjectedShadowOptions &options,
@@ -45,50 +33,9 @@ class ProjectedShadowTest : public ::testing::Test {
     return mask;
   }
 
-  // Pixels where object `index` is the visible surface: the scene drawn with only that object
-  // white and the others black, without shadows.
-  static std::vector<bool> coverage(gs::Scene scene, std::size_t index) {
-    scene.lights.clear();
-    scene.ambient = glm::vec3(1.0f);
-    scene.background = glm::vec3(0.0f);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      scene.objects[i].mesh.set_color(glm::vec3(i == index ? 1.0f : 0.0f));
-    }
-    gs::render_scene(scene, gs::project_scene(scene));
-    std::vector<bool> covered;
-    for (FxU16 p : back_buffer()) covered.push_back(p != 0);
-    return covered;
-  }
 
-  static int count(const std::vector<bool> &a, const std::vector<bool> &b) {
-    int n = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] && b[i];
-    return n;
-  }
 
-  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
-    gs::SceneObject o;
-    o.name = name;
-    o.mesh = std::move(mesh);
-    o.model_to_world = glm::translate(glm::mat4(1.0f), at);
-    return o;
-  }
 
-  // A 1 m box 1 m above a 10 m floor, the light straight above, the camera looking down at 45.
-  static gs::Scene box_over_floor() {
-    gs::Scene scene;
-    scene.width = kWidth, scene.height = kHeight;
-    scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
-    scene.objects[0].casts_shadow = false;
-    scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
-    gs::SpotLight light;
-    light.position = {0, 8, 0};
-    light.target = {0, 0, 0};
-    scene.lights.push_back(light);
-    scene.camera.position = {0, 6, 6};
-    scene.camera.target = {0, 0.5f, 0};
-    return scene;
-  }
 };
 
 TEST_F(ProjectedShadowTest, ShadowFallsUnderTheCasterAndNotOnIt) {

@@ -9,6 +9,8 @@
 #include <glide.h>
 #include <glide_shim.h>
 #include <gtest/gtest.h>
+
+#include "technique_fixture.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -16,37 +18,12 @@
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
-using Mask = std::vector<bool>;  // per pixel, rows from the top
 
-class StencilVolumeShadowTest : public ::testing::Test {
+class StencilVolumeShadowTest : public TechniqueTest {
  protected:
-  void SetUp() override {
-    grGlideInit();
-    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
-    ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
-                             GR_ORIGIN_UPPER_LEFT, 2, 1));
-    glideShimClearError();
-  }
-  void TearDown() override { grGlideShutdown(); }
 
-  static std::vector<FxU16> back_buffer() {
-    std::vector<FxU16> pixels(kWidth * kHeight);
-    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, pixels.data());
-    return pixels;
-  }
 
-  static Mask white_pixels() {
-    Mask mask;
-    for (FxU16 p : back_buffer()) mask.push_back(p != 0);
-    return mask;
-  }
 
-  static Mask mask_of(gs::ShadowTechnique &technique, const gs::Scene &scene) {
-    technique.render(scene, false);
-    technique.render_mask(scene);
-    return white_pixels();
-  }
 
   static Mask stencil_mask(const gs::Scene &scene, gs::TechniqueOptions::VolumeMode mode) {
     gs::TechniqueOptions options;
@@ -54,55 +31,14 @@ class StencilVolumeShadowTest : public ::testing::Test {
     return mask_of(*gs::make_stencil_volume_shadow(options), scene);
   }
 
-  // Pixels where object `index` is the visible surface: the scene pass with only that object
-  // white, without lights or shadows.
-  static Mask coverage(gs::Scene scene, std::size_t index) {
-    scene.lights.clear();
-    scene.ambient = glm::vec3(1.0f);
-    scene.background = glm::vec3(0.0f);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      scene.objects[i].mesh.set_color(glm::vec3(i == index ? 1.0f : 0.0f));
-    }
-    gs::render_scene(scene, gs::project_scene(scene));
-    return white_pixels();
-  }
 
-  static int count(const Mask &a) { return static_cast<int>(std::count(a.begin(), a.end(), true)); }
-  static Mask both(const Mask &a, const Mask &b) {
-    Mask m(a.size());
-    for (std::size_t i = 0; i < a.size(); ++i) m[i] = a[i] && b[i];
-    return m;
-  }
   static Mask without(const Mask &a, const Mask &b) {
     Mask m(a.size());
     for (std::size_t i = 0; i < a.size(); ++i) m[i] = a[i] && !b[i];
     return m;
   }
 
-  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
-    gs::SceneObject o;
-    o.name = name;
-    o.mesh = std::move(mesh);
-    o.model_to_world = glm::translate(glm::mat4(1.0f), at);
-    return o;
-  }
 
-  // A 1 m box (y 1..2) over a 10 m floor, the light straight above, the camera looking down at
-  // 45 degrees: the shadow on the floor is the square |x|, |z| <= 0.5 * 8 / (8 - 2) = 2/3.
-  static gs::Scene box_over_floor() {
-    gs::Scene scene;
-    scene.width = kWidth, scene.height = kHeight;
-    scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
-    scene.objects[0].casts_shadow = false;
-    scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
-    gs::SpotLight light;
-    light.position = {0, 8, 0};
-    light.target = {0, 0, 0};
-    scene.lights.push_back(light);
-    scene.camera.position = {0, 6, 6};
-    scene.camera.target = {0, 0.5f, 0};
-    return scene;
-  }
 };
 
 using Mode = gs::TechniqueOptions::VolumeMode;
@@ -152,7 +88,7 @@ TEST(StencilVolumeSilhouette, ClosedAndOpenMeshesAreTold) {
   broken.positions[0].x = NAN;
   EXPECT_FALSE(gs::build_edge_mesh(broken).closed);
   // The fighters' shadow meshes are made of closed parts: none may be skipped.
-  gs::FightScene fight(kWidth, kHeight, 128);
+  gs::FightScene fight(TechniqueTest::kWidth, TechniqueTest::kHeight, 128);
   for (float time : {0.0f, 2.1f, 5.3f}) {
     for (const gs::SceneObject &o : fight.at(time).objects) {
       if (!o.casts_shadow) continue;
