@@ -1,12 +1,14 @@
-// Frame export through OpenImageIO. Gamma lives only here: the frame buffer and LFB reads stay
-// pre-gamma, as on the hardware, where the CLUT sits between frame buffer and DAC.
+// Frame export. Gamma lives only here: the frame buffer and LFB reads stay pre-gamma, as on the
+// hardware, where the CLUT sits between frame buffer and DAC. The PNG itself is written by the
+// png_writer module (OpenImageIO), loaded on first use.
 #include "frame_export.h"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
+
+#include <filesystem>
 
 #include <array>
 #include <cmath>
-#include <memory>
 
 namespace glide_shim {
 namespace {
@@ -46,17 +48,26 @@ std::vector<std::uint8_t> scan_out(const std::vector<std::uint16_t> &pixels, flo
 
 bool write_png(const std::string &path, int width, int height,
                const std::vector<std::uint8_t> &rgb, std::string &error) {
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    error = "cannot write '" + path + "': " + OIIO::geterror();
+  // The writer lives in its own module, next to this library, so that programs which never
+  // export a frame do not load OpenImageIO (and its ~250 dependent libraries) at start-up.
+  using Writer = int (*)(const char *, int, int, const unsigned char *, char *, unsigned);
+  static Writer writer = [] {
+    Dl_info self{};
+    if (dladdr(reinterpret_cast<void *>(&scan_out), &self) == 0 || self.dli_fname == nullptr) {
+      return Writer{nullptr};
+    }
+    const std::string directory = std::filesystem::path(self.dli_fname).parent_path().string();
+    void *module = dlopen((directory + "/libglide2x_png.so").c_str(), RTLD_NOW | RTLD_LOCAL);
+    return module == nullptr ? Writer{nullptr}
+                             : reinterpret_cast<Writer>(dlsym(module, "glideshim_write_png"));
+  }();
+  if (writer == nullptr) {
+    error = "cannot load libglide2x_png.so from the directory of libglide2x (it writes the PNGs)";
     return false;
   }
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  // Level 6 keeps files small without making a frame dump the slowest part of a frame.
-  spec.attribute("png:compressionLevel", 6);
-  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) ||
-      !out->close()) {
-    error = "cannot write '" + path + "': " + out->geterror();
+  char message[512] = {};
+  if (writer(path.c_str(), width, height, rgb.data(), message, sizeof message) == 0) {
+    error = message;
     return false;
   }
   return true;
