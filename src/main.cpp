@@ -27,6 +27,9 @@ struct TechniqueChoice {
   std::string name = "projected";
   bool direct_path = false, point = false, affine = false, auto_size = false;
   std::string alpha = "constant";
+  float bias_slope = 1.0f, bias_units = 4.0f;  // depth-map polygon offset
+  bool nearest = false;                       // depth-map filtering
+  std::string volume = "auto";                // stencil-volume mode
 };
 
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size) {
@@ -47,6 +50,17 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
   command.add_option("--alpha", choice.alpha, "iterated alpha: constant (170) or distance")
       ->check(CLI::IsMember({"constant", "distance"}))
       ->capture_default_str();
+  command.add_option("--bias-slope", choice.bias_slope, "depth-map: glPolygonOffset factor")
+      ->check(CLI::Range(0.0f, 100.0f))
+      ->capture_default_str();
+  command.add_option("--bias-units", choice.bias_units, "depth-map: glPolygonOffset units")
+      ->check(CLI::Range(0.0f, 10000.0f))
+      ->capture_default_str();
+  command.add_flag("--nearest", choice.nearest,
+                   "depth-map: nearest comparison instead of percentage-closer filtering");
+  command.add_option("--volume", choice.volume, "stencil-volume: auto, zpass or zfail")
+      ->check(CLI::IsMember({"auto", "zpass", "zfail"}))
+      ->capture_default_str();
 }
 
 gs::TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_size) {
@@ -59,6 +73,13 @@ gs::TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow
   options.chroma_key = choice.name == "projected-chroma";
   options.projective = !choice.affine;
   options.alpha = choice.alpha == "distance" ? gs::ShadowAlpha::Distance : gs::ShadowAlpha::Constant;
+  all.depth_bias_slope = choice.bias_slope;
+  all.depth_bias_units = choice.bias_units;
+  all.depth_map_linear = !choice.nearest;
+  using Mode = gs::TechniqueOptions::VolumeMode;
+  all.volume_mode = choice.volume == "zpass"   ? Mode::ZPass
+                    : choice.volume == "zfail" ? Mode::ZFail
+                                               : Mode::Automatic;
   return all;
 }
 
