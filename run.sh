@@ -16,7 +16,7 @@ PACKAGES=(
   libosmesa6-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev
-  libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
+  libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libembree-dev
 )
 
 install_missing_packages() {

@@ -1,6 +1,8 @@
 // glideshadows: the command-line tool. `demo` renders the fight headless with shadows; `render`
 // renders a scene file and optionally its shadow mask. Every subcommand has --help.
 #include "fight_scene.h"
+#include "ground_truth.h"
+#include "metrics.h"
 #include "projected_shadow.h"
 #include "scene.h"
 #include "technique.h"
@@ -275,6 +277,69 @@ int run_render(const std::string &scene_path, const TechniqueChoice &choice, int
   return ok ? 0 : 1;
 }
 
+bool write_rgb_png(const std::string &path, int width, int height, const std::vector<std::uint8_t> &rgb) {
+  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), const_cast<std::uint8_t *>(rgb.data()));
+  return image.write(path);
+}
+
+bool write_mask_png(const std::string &path, int width, int height, const std::vector<std::uint8_t> &mask) {
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(mask.size() * 3);
+  for (std::uint8_t m : mask) rgb.insert(rgb.end(), 3, m != 0 ? 255 : 0);
+  return write_rgb_png(path, width, height, rgb);
+}
+
+int run_truth(const std::string &scene_path, const std::string &mask, const std::string &image) {
+  gs::Scene scene;
+  std::string error;
+  if (!gs::load_scene(scene_path, scene, error)) {
+    std::fprintf(stderr, "glideshadows truth: %s\n", error.c_str());
+    return 1;
+  }
+  gs::GroundTruth truth;
+  if (!gs::compute_ground_truth(scene, truth, error)) {
+    std::fprintf(stderr, "glideshadows truth: %s\n", error.c_str());
+    return 1;
+  }
+  if (!write_mask_png(mask, truth.width, truth.height, truth.shadow)) {
+    std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", mask.c_str(), OIIO::geterror().c_str());
+    return 1;
+  }
+  std::printf("mask: %s (white: a light blocked by another object)\n", mask.c_str());
+  if (!image.empty()) {
+    if (!write_rgb_png(image, truth.width, truth.height, truth.rgb)) {
+      std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", image.c_str(), OIIO::geterror().c_str());
+      return 1;
+    }
+    std::printf("image: %s (exact visibility, per-pixel lighting)\n", image.c_str());
+  }
+  return 0;
+}
+
+int run_compare(const std::string &a, const std::string &b, const std::string &diff) {
+  gs::ImageErrors errors;
+  std::string error;
+  if (!gs::compare_images(a, b, diff, errors, error)) {
+    std::fprintf(stderr, "glideshadows compare: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("mean error %.6f, max error %.6f, PSNR %.2f dB, %ld pixels differ by more than 1/255\n",
+              errors.mean, errors.max, errors.psnr, errors.pixels_over_threshold);
+  // Two masks (black and white) are also compared as shadow masks, B being the truth.
+  std::vector<std::uint8_t> ma, mb;
+  int wa = 0, ha = 0, wb = 0, hb = 0;
+  if (gs::read_mask(a, ma, wa, ha, error) && gs::read_mask(b, mb, wb, hb, error) && wa == wb && ha == hb) {
+    const std::vector<std::uint8_t> all(ma.size(), 1);
+    const gs::MaskErrors m = gs::compare_masks(ma, mb, all, wa, ha);
+    std::printf("as masks (B the truth): %.3f%% misclassified: false shadow %.3f%% band + %.3f%% interior, "
+                "false light %.3f%% band + %.3f%% interior; farthest wrong pixel %.1f px from the true edge\n",
+                100 * m.misclassified, 100 * m.false_shadow_band, 100 * m.false_shadow_interior,
+                100 * m.false_light_band, 100 * m.false_light_interior, m.max_distance_px);
+  }
+  if (!diff.empty()) std::printf("heat map: %s\n", diff.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -305,7 +370,21 @@ int main(int argc, char **argv) {
   render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
   render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256, 512}));
 
+  CLI::App *truth = app.add_subcommand("truth", "ray-cast the exact shadow mask (and image) of a scene file");
+  std::string truth_scene, truth_mask, truth_image;
+  truth->add_option("scene", truth_scene, "scene file")->required()->check(CLI::ExistingFile);
+  truth->add_option("--mask", truth_mask, "output: white where another object blocks a light")->required();
+  truth->add_option("--image", truth_image, "output: the scene lit with exact visibility");
+
+  CLI::App *compare = app.add_subcommand("compare", "compare two images (and, for masks, shadow errors)");
+  std::string compare_a, compare_b, compare_diff;
+  compare->add_option("a", compare_a, "an image, or a technique's mask")->required()->check(CLI::ExistingFile);
+  compare->add_option("b", compare_b, "the reference image, or the true mask")->required()->check(CLI::ExistingFile);
+  compare->add_option("--diff", compare_diff, "write a heat map of the difference (PNG)");
+
   CLI11_PARSE(app, argc, argv);
+  if (truth->parsed()) return run_truth(truth_scene, truth_mask, truth_image);
+  if (compare->parsed()) return run_compare(compare_a, compare_b, compare_diff);
   if (demo->parsed()) {
     return run_demo(frames, size, shadow_size, demo_choice, out_dir, fps, gif, sheet);
   }

@@ -95,6 +95,25 @@ TEST(SceneFiles, EveryTechniqueRendersAndMasksFromTheCommandLine) {
   }
 }
 
+TEST(SceneFiles, TruthAndCompareMeasureATechniqueAgainstRayCasting) {
+  // glideshadows truth writes the exact mask; compare reports the technique's errors against it.
+  const std::string scene = std::string(SCENES_DIR) + "/box_on_plane.json";
+  const std::string truth = output_path("truth_mask.png"), image = output_path("truth_image.png");
+  const std::string mask = output_path("projected_mask.png"), report = output_path("compare.txt");
+  const std::string heat = output_path("compare_heat.png");
+  const std::string tool = GLIDESHADOWS_PATH;
+  ASSERT_EQ(std::system((tool + " truth " + scene + " --mask " + truth + " --image " + image + " > /dev/null").c_str()), 0);
+  ASSERT_EQ(std::system((tool + " render " + scene + " --out " + output_path("projected.png") + " --mask " + mask + " > /dev/null").c_str()), 0);
+  ASSERT_EQ(std::system((tool + " compare " + mask + " " + truth + " --diff " + heat + " > " + report).c_str()), 0);
+  const std::string text = file_bytes(report);
+  const std::size_t at = text.find("as masks (B the truth): ");
+  ASSERT_NE(at, std::string::npos) << text;
+  const double misclassified = std::atof(text.c_str() + at + std::strlen("as masks (B the truth): "));
+  // The projected texture on this scene is wrong only along the shadow's edge.
+  EXPECT_LT(misclassified, 0.5) << text;
+  EXPECT_TRUE(std::filesystem::exists(heat) && std::filesystem::exists(image));
+}
+
 TEST(SceneFiles, ABadSceneIsRefusedWithTheFieldNamed) {
   const std::string bad = output_path("bad_scene.json");
   std::FILE *file = std::fopen(bad.c_str(), "w");

@@ -1,0 +1,44 @@
+// Error of a technique's shadow mask against the ground truth, split the way the field reads
+// it: pixels within one pixel of the true shadow boundary (sampling error) and the rest (real
+// mistakes: missing shadows, acne, leaks, back projection), as fractions of the receiver pixels,
+// plus the farthest a wrong pixel lies from the true boundary. Whole images: mean, max, PSNR.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gs {
+
+struct MaskErrors {
+  long receiver_pixels = 0;          // pixels the comparison counts (visible surfaces)
+  long false_shadow = 0, false_light = 0;
+  double false_shadow_band = 0.0;    // fractions of receiver_pixels
+  double false_shadow_interior = 0.0;
+  double false_light_band = 0.0;
+  double false_light_interior = 0.0;
+  double misclassified = 0.0;        // all four together
+  double max_distance_px = 0.0;      // from a wrong pixel to the nearest true boundary pixel
+};
+
+// `technique` and `truth` are 0/1 per pixel (rows from the top); `receivers` marks the pixels
+// that count (1) and those that do not (0: background, or excluded such as self-shadow).
+MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
+                         const std::vector<std::uint8_t> &truth,
+                         const std::vector<std::uint8_t> &receivers, int width, int height);
+
+struct ImageErrors {
+  double mean = 0.0, max = 0.0, psnr = 0.0;  // channel values 0..1; PSNR in dB
+  long pixels_over_threshold = 0;
+};
+
+// Compares two images of the same size through OpenImageIO; writes a heat map of the difference
+// (black: none, through red and yellow to white: the largest) when `heat_map` is not empty.
+bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
+                    ImageErrors &errors, std::string &error);
+
+// Reads a mask PNG (any pixel with a channel above half is 1).
+bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
+               std::string &error);
+
+}  // namespace gs

@@ -1,0 +1,315 @@
+// The error metrics on synthetic masks built here (band vs interior, distances to the true
+// boundary, receivers, fractions; the distance transform against brute force) and on small PNGs
+// written to the test's temporary directory (mean / max / PSNR, heat map, reading errors).
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "metrics.h"
+
+namespace {
+
+using namespace gs;
+
+struct Mask {
+  int width, height;
+  std::vector<std::uint8_t> pixels;
+  Mask(int w, int h, std::uint8_t value = 0) : width(w), height(h), pixels(std::size_t(w) * h, value) {}
+  void fill(int x0, int y0, int x1, int y1, std::uint8_t value) {  // [x0, x1) × [y0, y1)
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) pixels[std::size_t(y) * width + x] = value;
+  }
+};
+
+MaskErrors compare(const Mask &technique, const Mask &truth, const Mask &receivers) {
+  return compare_masks(technique.pixels, truth.pixels, receivers.pixels, truth.width, truth.height);
+}
+
+MaskErrors compare(const Mask &technique, const Mask &truth) {
+  return compare(technique, truth, Mask(truth.width, truth.height, 1));
+}
+
+double interior(const MaskErrors &e) { return e.false_shadow_interior + e.false_light_interior; }
+
+TEST(CompareMasks, IdenticalMasksHaveNoError) {
+  Mask truth(64, 48);
+  truth.fill(10, 10, 30, 30, 1);
+  const MaskErrors e = compare(truth, truth);
+  EXPECT_EQ(e.receiver_pixels, 64 * 48);
+  EXPECT_EQ(e.false_shadow, 0);
+  EXPECT_EQ(e.false_light, 0);
+  EXPECT_EQ(e.misclassified, 0.0);
+  EXPECT_EQ(e.max_distance_px, 0.0);
+}
+
+// Both sides of a shadow edge are boundary pixels, so a sideways shift by one leaves every wrong
+// pixel on the boundary (distance 0); a diagonal shift puts one corner pixel a pixel away.
+TEST(CompareMasks, OnePixelShiftIsBandErrorOnly) {
+  Mask truth(64, 48), sideways(64, 48), diagonal(64, 48);
+  truth.fill(10, 10, 30, 30, 1);
+  sideways.fill(11, 10, 31, 30, 1);
+  diagonal.fill(11, 11, 31, 31, 1);
+
+  const MaskErrors s = compare(sideways, truth);
+  EXPECT_EQ(s.false_shadow, 20);
+  EXPECT_EQ(s.false_light, 20);
+  EXPECT_DOUBLE_EQ(s.false_shadow_band, 20.0 / (64 * 48));
+  EXPECT_DOUBLE_EQ(s.false_light_band, 20.0 / (64 * 48));
+  EXPECT_EQ(interior(s), 0.0);
+  EXPECT_LE(s.max_distance_px, 1.0);
+
+  const MaskErrors d = compare(diagonal, truth);
+  EXPECT_EQ(d.false_shadow, 39);
+  EXPECT_EQ(d.false_light, 39);
+  EXPECT_EQ(interior(d), 0.0);
+  EXPECT_DOUBLE_EQ(d.max_distance_px, 1.0);  // corner (30,30) to boundary (30,29)
+}
+
+// The band is the 8-neighbourhood of the boundary: a wrong pixel diagonal to a boundary pixel is
+// in it, one two pixels straight out is not.
+TEST(CompareMasks, BandIsChebyshevDistanceOne) {
+  Mask truth(40, 40), technique(40, 40);
+  truth.fill(20, 20, 21, 21, 1);  // boundary: (20,20) and its four neighbours
+  technique = truth;
+  technique.fill(22, 21, 23, 22, 1);  // diagonal to (21,20)
+  technique.fill(23, 20, 24, 21, 1);  // two pixels right of (21,20)
+  const MaskErrors e = compare(technique, truth);
+  EXPECT_DOUBLE_EQ(e.false_shadow_band, 1.0 / (40 * 40));
+  EXPECT_DOUBLE_EQ(e.false_shadow_interior, 1.0 / (40 * 40));
+  EXPECT_DOUBLE_EQ(e.max_distance_px, 2.0);
+}
+
+TEST(CompareMasks, HoleInLargeShadowIsInteriorFalseLight) {
+  Mask truth(200, 200), technique(200, 200);
+  truth.fill(20, 20, 180, 180, 1);
+  technique.fill(20, 20, 180, 180, 1);
+  technique.fill(98, 98, 103, 103, 0);
+  const MaskErrors e = compare(technique, truth);
+  EXPECT_EQ(e.false_light, 25);
+  EXPECT_EQ(e.false_shadow, 0);
+  EXPECT_DOUBLE_EQ(e.false_light_interior, 25.0 / (200 * 200));
+  EXPECT_EQ(e.false_light_band, 0.0);
+  // Inner boundary rows/columns are 20 and 179; the hole pixel (99..100, 99..100) deepest inside
+  // is min(99 − 20, 179 − 100) = 79 from the nearest.
+  EXPECT_DOUBLE_EQ(e.max_distance_px, 79.0);
+}
+
+TEST(CompareMasks, SpuriousBlobIsInteriorFalseShadowWithItsDistance) {
+  Mask truth(200, 200), technique(200, 200);
+  truth.fill(10, 10, 30, 30, 1);
+  technique.fill(10, 10, 30, 30, 1);
+  technique.fill(150, 100, 155, 105, 1);
+  const MaskErrors e = compare(technique, truth);
+  EXPECT_EQ(e.false_shadow, 25);
+  EXPECT_EQ(e.false_light, 0);
+  EXPECT_DOUBLE_EQ(e.false_shadow_interior, 25.0 / (200 * 200));
+  EXPECT_EQ(e.false_shadow_band, 0.0);
+  // Farthest blob pixel (154,104); nearest boundary pixel is the lit (30,29) beside the shadow.
+  EXPECT_NEAR(e.max_distance_px, std::hypot(124.0, 75.0), 1e-9);
+}
+
+TEST(CompareMasks, NonReceiverPixelsAreIgnored) {
+  Mask truth(40, 30), technique(40, 30), receivers(40, 30, 1);
+  truth.fill(5, 5, 15, 15, 1);
+  technique.fill(5, 5, 15, 15, 1);
+  technique.fill(25, 5, 35, 15, 1);  // wrong, but on a non-receiver
+  truth.fill(25, 20, 35, 25, 1);     // wrong too, same
+  receivers.fill(20, 0, 40, 30, 0);
+  const MaskErrors e = compare(technique, truth, receivers);
+  EXPECT_EQ(e.receiver_pixels, 20 * 30);
+  EXPECT_EQ(e.false_shadow, 0);
+  EXPECT_EQ(e.false_light, 0);
+  EXPECT_EQ(e.max_distance_px, 0.0);
+
+  EXPECT_EQ(compare(technique, truth, Mask(40, 30, 0)).misclassified, 0.0);  // no NaN
+}
+
+// A receiver edge against non-receivers is a silhouette, not a shadow boundary: with no shadow
+// edge anywhere a wrong pixel is interior and reported at the image diagonal.
+TEST(CompareMasks, NoTrueBoundaryReportsImageDiagonal) {
+  Mask truth(40, 30), technique(40, 30), receivers(40, 30, 1);
+  truth.fill(0, 0, 20, 30, 1);
+  receivers.fill(20, 0, 40, 30, 0);
+  technique.fill(0, 0, 20, 30, 1);
+  technique.fill(3, 3, 4, 4, 0);
+  const MaskErrors e = compare(technique, truth, receivers);
+  EXPECT_EQ(e.false_light, 1);
+  EXPECT_DOUBLE_EQ(e.false_light_interior, 1.0 / (20 * 30));
+  EXPECT_DOUBLE_EQ(e.max_distance_px, 50.0);
+}
+
+// Deterministic pseudo-random masks so the test is repeatable.
+std::uint32_t next(std::uint32_t &state) {
+  state = state * 1664525u + 1013904223u;
+  return state >> 8;
+}
+
+TEST(CompareMasks, FractionsAddUpAndDistanceMatchesBruteForce) {
+  const int w = 53, h = 37;
+  Mask truth(w, h), technique(w, h), receivers(w, h, 1);
+  truth.fill(8, 6, 30, 25, 1);
+  truth.fill(35, 20, 50, 33, 1);
+  technique = truth;
+  std::uint32_t state = 12345;
+  for (auto &p : technique.pixels)
+    if (next(state) % 9 == 0) p ^= 1;
+  for (auto &r : receivers.pixels)
+    if (next(state) % 11 == 0) r = 0;
+  const MaskErrors e = compare(technique, truth, receivers);
+
+  ASSERT_GT(e.false_shadow, 0);
+  ASSERT_GT(e.false_light, 0);
+  EXPECT_GT(interior(e), 0.0);
+  EXPECT_GT(e.false_shadow_band + e.false_light_band, 0.0);
+  EXPECT_NEAR(e.false_shadow_band + e.false_shadow_interior + e.false_light_band +
+                  e.false_light_interior,
+              e.misclassified, 1e-12);
+  EXPECT_DOUBLE_EQ(e.misclassified, double(e.false_shadow + e.false_light) / static_cast<double>(e.receiver_pixels));
+
+  auto at = [&](const Mask &m, int x, int y) { return m.pixels[std::size_t(y) * w + x]; };
+  auto on_boundary = [&](int x, int y) {
+    if (!at(receivers, x, y)) return false;
+    const int n[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
+    for (const auto &q : n)
+      if (q[0] >= 0 && q[1] >= 0 && q[0] < w && q[1] < h && at(receivers, q[0], q[1]) &&
+          at(truth, q[0], q[1]) != at(truth, x, y))
+        return true;
+    return false;
+  };
+  double farthest = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!at(receivers, x, y) || at(technique, x, y) == at(truth, x, y)) continue;
+      double nearest = 1e300;
+      for (int by = 0; by < h; ++by)
+        for (int bx = 0; bx < w; ++bx)
+          if (on_boundary(bx, by)) nearest = std::min(nearest, std::hypot(bx - x, by - y));
+      farthest = std::max(farthest, nearest);
+    }
+  EXPECT_NEAR(e.max_distance_px, farthest, 1e-9);
+}
+
+// The tool compares full frames; one boundary pixel far from most wrong pixels is the worst case.
+TEST(CompareMasks, FullFrameIsFast) {
+  Mask truth(640, 480), technique(640, 480, 1);
+  truth.fill(0, 0, 1, 1, 1);
+  const auto start = std::chrono::steady_clock::now();
+  const MaskErrors e = compare(technique, truth);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 0.5);
+  EXPECT_NEAR(e.max_distance_px, std::hypot(638.0, 479.0), 1e-9);  // far corner to (1,0)
+}
+
+std::string temp_path(const std::string &name) { return testing::TempDir() + "metrics_" + name; }
+
+// Writes 8-bit pixels (row-major, `channels` per pixel) as a PNG.
+void write_png(const std::string &path, int w, int h, int channels,
+               std::vector<unsigned char> pixels) {
+  OIIO::ImageBuf buf(OIIO::ImageSpec(w, h, channels, OIIO::TypeDesc::UINT8), pixels.data());
+  ASSERT_TRUE(buf.write(path)) << buf.geterror();
+}
+
+TEST(CompareImages, MeanMaxPsnrAndHeatMap) {
+  const int w = 4, h = 2;
+  std::vector<unsigned char> black(w * h * 3, 0);
+  // Pixel (1,0) green: one level, not over the threshold. 191 → 192 is a pair whose difference
+  // as float comes out above 1/255.
+  black[4] = 191;
+  std::vector<unsigned char> changed = black;
+  changed[0] = 255;  // pixel (0,0) red: difference 1
+  changed[4] = 192;
+  changed[6] = 2;    // pixel (2,0) red: two levels, over it
+  const std::string a = temp_path("a.png"), b = temp_path("b.png"), heat = temp_path("heat.png");
+  std::remove(heat.c_str());
+  write_png(a, w, h, 3, black);
+  write_png(b, w, h, 3, changed);
+
+  ImageErrors e;
+  std::string error;
+  ASSERT_TRUE(compare_images(a, b, heat, e, error)) << error;
+  const double values = w * h * 3;
+  EXPECT_NEAR(e.mean, (1.0 + 3.0 / 255) / values, 1e-6);
+  EXPECT_NEAR(e.max, 1.0, 1e-6);
+  EXPECT_EQ(e.pixels_over_threshold, 2);
+  const double rms = std::sqrt((1.0 + 5.0 / (255.0 * 255.0)) / values);
+  EXPECT_NEAR(e.psnr, 20.0 * std::log10(1.0 / rms), 1e-3);
+
+  OIIO::ImageBuf map(heat);
+  ASSERT_TRUE(map.read(0, 0, true, OIIO::TypeDesc::FLOAT)) << map.geterror();
+  EXPECT_EQ(map.spec().width, w);
+  EXPECT_EQ(map.spec().height, h);
+  float rgb[3];
+  map.getpixel(0, 0, rgb, 3);  // the largest difference: white
+  EXPECT_FLOAT_EQ(rgb[0] + rgb[1] + rgb[2], 3.0f);
+  map.getpixel(3, 1, rgb, 3);  // no difference: black
+  EXPECT_FLOAT_EQ(rgb[0] + rgb[1] + rgb[2], 0.0f);
+  map.getpixel(2, 0, rgb, 3);  // 2/255 of the largest: dark red
+  EXPECT_GT(rgb[0], 0.0f);
+  EXPECT_LT(rgb[0], 0.1f);
+  EXPECT_EQ(rgb[1] + rgb[2], 0.0f);
+}
+
+// OIIO gives +inf for identical images; compare_images reports a finite 999 dB instead.
+TEST(CompareImages, IdenticalImagesHaveFiniteDocumentedPsnr) {
+  const std::string a = temp_path("same.png");
+  write_png(a, 3, 3, 3, std::vector<unsigned char>(27, 77));
+  ImageErrors e;
+  std::string error;
+  ASSERT_TRUE(compare_images(a, a, "", e, error)) << error;
+  EXPECT_EQ(e.mean, 0.0);
+  EXPECT_EQ(e.max, 0.0);
+  EXPECT_EQ(e.pixels_over_threshold, 0);
+  EXPECT_TRUE(std::isfinite(e.psnr));
+  EXPECT_EQ(e.psnr, 999.0);
+}
+
+TEST(CompareImages, ReportsMissingFileAndSizeMismatchByName) {
+  const std::string a = temp_path("small.png"), b = temp_path("large.png");
+  const std::string missing = temp_path("does_not_exist.png");
+  write_png(a, 2, 2, 3, std::vector<unsigned char>(12, 0));
+  write_png(b, 3, 2, 3, std::vector<unsigned char>(18, 0));
+  ImageErrors e;
+  std::string error;
+  EXPECT_FALSE(compare_images(a, missing, "", e, error));
+  EXPECT_NE(error.find(missing), std::string::npos) << error;
+  error.clear();
+  EXPECT_FALSE(compare_images(missing, a, "", e, error));
+  EXPECT_NE(error.find(missing), std::string::npos) << error;
+  error.clear();
+  EXPECT_FALSE(compare_images(a, b, "", e, error));
+  EXPECT_NE(error.find(a), std::string::npos) << error;
+  EXPECT_NE(error.find(b), std::string::npos) << error;
+}
+
+TEST(ReadMask, ChannelAboveHalfIsShadowAlphaIgnored) {
+  const std::string path = temp_path("mask.png");
+  // RGBA, opaque: (0,0) black, (1,0) blue 128, (0,1) green 127, (1,1) white.
+  write_png(path, 2, 2, 4,
+            {0, 0, 0, 255, 0, 0, 128, 255, 0, 127, 0, 255, 255, 255, 255, 255});
+  std::vector<std::uint8_t> mask;
+  int w = 0, h = 0;
+  std::string error;
+  ASSERT_TRUE(read_mask(path, mask, w, h, error)) << error;
+  EXPECT_EQ(w, 2);
+  EXPECT_EQ(h, 2);
+  EXPECT_EQ(mask, (std::vector<std::uint8_t>{0, 1, 0, 1}));
+}
+
+TEST(ReadMask, ReportsMissingFileByName) {
+  const std::string missing = temp_path("no_mask.png");
+  std::vector<std::uint8_t> mask;
+  int w = 0, h = 0;
+  std::string error;
+  EXPECT_FALSE(read_mask(missing, mask, w, h, error));
+  EXPECT_NE(error.find(missing), std::string::npos) << error;
+}
+
+}  // namespace
