@@ -218,6 +218,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
     }
     maps_.back() = map;
     gl_.glViewport(0, 0, side, side);
+    gl_.glClearDepth(1.0);  // the light's far plane (Glide's own clears leave other values)
     gl_.glClear(GL_DEPTH_BUFFER_BIT);
     gl_.glMatrixMode(GL_PROJECTION);
     gl_.glLoadMatrixf(&frustum.projection[0][0]);

@@ -3,6 +3,8 @@
 #include "fight_scene.h"
 #include "ground_truth.h"
 #include "metrics.h"
+#include "plot.h"
+#include "speed_error.h"
 #include "projected_shadow.h"
 #include "scene.h"
 #include "technique.h"
@@ -340,6 +342,111 @@ int run_compare(const std::string &a, const std::string &b, const std::string &d
   return 0;
 }
 
+int run_bench(std::vector<std::string> scene_files, bool quick, int repeats, const std::string &csv,
+              const std::string &plot, double budget) {
+  std::vector<gs::BenchFrame> frames;
+  gs::FightScene fight(640, 480, 256);
+  for (float time : quick ? std::vector<float>{2.1f} : std::vector<float>{0.5f, 2.1f, 5.3f}) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fight t=%.1f", static_cast<double>(time));
+    frames.push_back({name, fight.at(time)});
+  }
+  if (scene_files.empty() && !quick && fs::is_directory("scenes")) {
+    for (const auto &entry : fs::directory_iterator("scenes")) {
+      if (entry.path().extension() == ".json") scene_files.push_back(entry.path().string());
+    }
+    std::sort(scene_files.begin(), scene_files.end());
+  }
+  for (const std::string &file : scene_files) {
+    gs::Scene scene;
+    std::string error;
+    if (!gs::load_scene(file, scene, error)) {
+      std::fprintf(stderr, "glideshadows bench: %s\n", error.c_str());
+      return 1;
+    }
+    frames.push_back({fs::path(file).stem().string(), std::move(scene)});
+  }
+  const std::vector<gs::BenchConfiguration> configurations = gs::bench_configurations(quick);
+  const bool tty = isatty(fileno(stderr)) != 0;
+  std::vector<gs::BenchRow> rows;
+  std::string error;
+  const bool ok = gs::run_bench(frames, configurations, repeats,
+      [&](int done, int total, const std::string &what) {
+        if (tty) std::fprintf(stderr, "\r[%d/%d] %-60.60s", done, total, what.c_str());
+        else if (done % 10 == 1 || done == total) std::fprintf(stderr, "[%d/%d] %s\n", done, total, what.c_str());
+      },
+      rows, error);
+  if (tty) std::fprintf(stderr, "\n");
+  if (!ok) {
+    std::fprintf(stderr, "glideshadows bench: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("%-14s %-16s %-26s %8s %6s %8s %8s %8s %6s\n", "frame", "technique", "settings", "ms",
+              "x none", "wrong%", "band%", "inner%", "maxpx");
+  for (const gs::BenchRow &r : rows) {
+    const double band = r.errors.false_shadow_band + r.errors.false_light_band;
+    const double inner = r.errors.false_shadow_interior + r.errors.false_light_interior;
+    std::printf("%-14s %-16s %-26s %8.2f %6.2f %8.3f %8.3f %8.3f %6.1f\n", r.frame.c_str(),
+                r.technique.c_str(), r.settings.c_str(), r.frame_ms, r.ratio_to_none,
+                100 * r.errors.misclassified, 100 * band, 100 * inner, r.errors.max_distance_px);
+  }
+  if (!csv.empty()) {
+    std::FILE *out = std::fopen(csv.c_str(), "w");
+    if (out == nullptr) {
+      std::fprintf(stderr, "glideshadows bench: cannot write %s\n", csv.c_str());
+      return 1;
+    }
+    std::fprintf(out, "frame,technique,settings,frame_ms,ratio_to_none,misclassified,false_shadow_band,"
+                      "false_shadow_interior,false_light_band,false_light_interior,max_distance_px,"
+                      "self_shadow,steps\n");
+    for (const gs::BenchRow &r : rows) {
+      std::string steps;
+      for (const auto &s : r.steps) steps += (steps.empty() ? "" : ";") + s.first + "=" + std::to_string(s.second);
+      std::fprintf(out, "%s,%s,%s,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.2f,%.6f,\"%s\"\n", r.frame.c_str(),
+                   r.technique.c_str(), r.settings.c_str(), r.frame_ms, r.ratio_to_none, r.errors.misclassified,
+                   r.errors.false_shadow_band, r.errors.false_shadow_interior, r.errors.false_light_band,
+                   r.errors.false_light_interior, r.errors.max_distance_px, r.self_shadow, steps.c_str());
+    }
+    std::fclose(out);
+    std::printf("CSV: %s\n", csv.c_str());
+  }
+  if (!plot.empty()) {
+    // One point per configuration: its mean time and mean error over the frames.
+    std::vector<gs::PlotPoint> points;
+    for (std::size_t c = 0; c < configurations.size(); ++c) {
+      double time = 0, wrong = 0;
+      int n = 0;
+      for (std::size_t f = 0; f < frames.size(); ++f) {
+        const gs::BenchRow &r = rows[f * configurations.size() + c];
+        time += r.frame_ms, wrong += r.errors.misclassified, ++n;
+      }
+      points.push_back({time / n, wrong / n, configurations[c].technique});
+    }
+    if (!gs::write_plot(points, "error against frame time (mean over frames)", plot, error)) {
+      std::fprintf(stderr, "glideshadows bench: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("plot: %s\n", plot.c_str());
+  }
+  if (budget >= 0.0) {
+    for (const gs::BenchFrame &frame : frames) {
+      const gs::BenchRow *best = nullptr;
+      for (const gs::BenchRow &r : rows) {
+        if (r.frame != frame.name || r.technique == "none" || r.errors.misclassified > budget) continue;
+        if (best == nullptr || r.frame_ms < best->frame_ms) best = &r;
+      }
+      if (best == nullptr) {
+        std::printf("budget %.4f, %s: no configuration is that accurate\n", budget, frame.name.c_str());
+      } else {
+        std::printf("budget %.4f, %s: %s %s (%.2f ms, %.3f%% wrong)\n", budget, frame.name.c_str(),
+                    best->technique.c_str(), best->settings.c_str(), best->frame_ms,
+                    100 * best->errors.misclassified);
+      }
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -382,7 +489,26 @@ int main(int argc, char **argv) {
   compare->add_option("b", compare_b, "the reference image, or the true mask")->required()->check(CLI::ExistingFile);
   compare->add_option("--diff", compare_diff, "write a heat map of the difference (PNG)");
 
+  CLI::App *bench = app.add_subcommand("bench", "speed against error of every technique and setting");
+  std::vector<std::string> bench_scenes;
+  bool bench_quick = false;
+  int bench_repeats = 5;
+  std::string bench_csv, bench_plot;
+  double bench_budget = -1.0;
+  bench->add_option("scenes", bench_scenes, "scene files (default: fight frames and scenes/*.json)")
+      ->check(CLI::ExistingFile);
+  bench->add_flag("--quick", bench_quick, "a few configurations on one fight frame (under a minute)");
+  bench->add_option("--repeats", bench_repeats, "timed repeats per configuration (median)")
+      ->check(CLI::Range(1, 100))->capture_default_str();
+  bench->add_option("--csv", bench_csv, "write one row per frame and configuration");
+  bench->add_option("--plot", bench_plot, "write error against time as a PNG with the Pareto front");
+  bench->add_option("--budget", bench_budget, "name the cheapest configuration with at most this error (fraction)")
+      ->check(CLI::Range(0.0, 1.0));
+
   CLI11_PARSE(app, argc, argv);
+  if (bench->parsed()) {
+    return run_bench(bench_scenes, bench_quick, bench_repeats, bench_csv, bench_plot, bench_budget);
+  }
   if (truth->parsed()) return run_truth(truth_scene, truth_mask, truth_image);
   if (compare->parsed()) return run_compare(compare_a, compare_b, compare_diff);
   if (demo->parsed()) {

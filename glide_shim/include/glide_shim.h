@@ -59,7 +59,8 @@ GLIDESHIM_API void glideShimRenderToFrameBuffer(void);
  * glideShimBeginGL draws every pending Glide primitive, saves the GL state, and leaves current:
  *   - the framebuffer holding Glide's render buffer (colour attachment drawn to) and its
  *     24-bit depth and 8-bit stencil buffer, with the viewport and scissor set to the screen;
- *   - no program, no textures bound, depth test, blending, culling and stencil off.
+ *   - no program, no textures bound, depth test, blending, culling and stencil off, and GL's
+ *     default clear values (colour 0, depth 1, stencil 0).
  * Glide's depth values are GL window depth 1/w in W-buffer mode (larger is nearer: compare with
  * GL_GEQUAL / GL_GREATER) and ooz/65535 in Z-buffer mode; a GL pass that must meet Glide's depth
  * uses the same mapping. Until glideShimEndGL, every Glide call is refused (INCONSISTENT).

@@ -15,7 +15,7 @@ namespace glide_shim {
 // without odr-using the symbol, so nothing is linked against libGL or libOSMesa.
 #define GLIDESHIM_GL_FUNCTIONS(X) \
   X(glViewport) X(glScissor) X(glEnable) \
-  X(glDisable) X(glClear) X(glClearColor) X(glClearDepth) X(glColorMask) \
+  X(glDisable) X(glClear) X(glClearColor) X(glClearDepth) X(glClearStencil) X(glColorMask) \
   X(glDepthMask) X(glDepthFunc) X(glBlendFunc) X(glReadPixels) X(glDrawPixels) \
   X(glPixelStorei) X(glWindowPos2i) X(glFinish) X(glGenTextures) \
   X(glDeleteTextures) X(glBindTexture) X(glTexImage2D) X(glTexSubImage2D) X(glTexParameteri) \

@@ -328,6 +328,10 @@ void GlRenderer::begin_plain_gl() {
   gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl.glDepthMask(GL_TRUE);
   gl.glStencilMask(0xFF);
+  // GL's default clear values: a W-buffer grBufferClear leaves the clear depth at 0 (far 1/w).
+  gl.glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  gl.glClearDepth(1.0);
+  gl.glClearStencil(0);
 }
 
 void GlRenderer::end_plain_gl() {

@@ -52,6 +52,23 @@ TEST_F(PlainGlTest, GlDrawsIntoGlidesBackBufferAndSeesItsDepth) {
   expect_no_error();
 }
 
+TEST_F(PlainGlTest, PlainGlStartsWithGlsDefaultClearValues) {
+  // A W-buffer clear to the farthest code sets GL's clear depth to 0 (1/w); a GL technique that
+  // clears its own depth map must not inherit that.
+  grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+  grDepthMask(FXTRUE);
+  grBufferClear(0x00FF00FFu, 0, GR_WDEPTHVALUE_FARTHEST);
+  ASSERT_TRUE(glideShimBeginGL());
+  auto get_floats = gl<void (*)(GLenum, float *)>("glGetFloatv");
+  float depth = -1.0f, color[4] = {-1, -1, -1, -1};
+  get_floats(GL_DEPTH_CLEAR_VALUE, &depth);
+  get_floats(GL_COLOR_CLEAR_VALUE, color);
+  glideShimEndGL();
+  EXPECT_EQ(depth, 1.0f);
+  EXPECT_EQ(color[0] + color[1] + color[2] + color[3], 0.0f);
+  expect_no_error();
+}
+
 TEST_F(PlainGlTest, BeginTwiceOrEndWithoutBeginIsRefused) {
   ASSERT_TRUE(glideShimBeginGL());
   EXPECT_FALSE(glideShimBeginGL());

@@ -1,0 +1,25 @@
+// A scatter plot of error against time as a PNG (OpenImageIO's drawing), with the Pareto front
+// (the configurations no other is both faster and more accurate than) joined and marked, for
+// the speed-against-error benchmark.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gs {
+
+struct PlotPoint {
+  double time_ms = 0.0;  // x
+  double error = 0.0;    // y, a fraction (0.01 = 1%)
+  std::string label;     // technique name; points sharing it share a colour
+};
+
+// Indices of the points on the Pareto front, ordered by time.
+std::vector<std::size_t> pareto_front(const std::vector<PlotPoint> &points);
+
+// Writes the plot (about 900x600): axes with ticks and values, one colour per label with a
+// legend, the front joined by a line. False with `error` naming the problem.
+bool write_plot(const std::vector<PlotPoint> &points, const std::string &title,
+                const std::string &path, std::string &error);
+
+}  // namespace gs
