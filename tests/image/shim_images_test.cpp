@@ -114,6 +114,21 @@ TEST(SceneFiles, TruthAndCompareMeasureATechniqueAgainstRayCasting) {
   EXPECT_TRUE(std::filesystem::exists(heat) && std::filesystem::exists(image));
 }
 
+TEST(SceneFiles, QuickBenchWritesTableCsvPlotAndBudget) {
+  const std::string csv = output_path("bench.csv"), plot = output_path("bench.png"),
+                    out = output_path("bench.txt");
+  const std::string command = std::string(GLIDESHADOWS_PATH) + " bench --quick --repeats 2 --csv " +
+                              csv + " --plot " + plot + " --budget 0.05 > " + out + " 2> /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string table = file_bytes(out), rows = file_bytes(csv);
+  for (const char *technique : {"projected", "planar", "depth-map", "stencil-volume", "none"}) {
+    EXPECT_NE(table.find(technique), std::string::npos) << technique << " missing from\n" << table;
+  }
+  EXPECT_EQ(rows.rfind("frame,technique,settings,frame_ms,ratio_to_none,misclassified", 0), 0u);
+  EXPECT_NE(table.find("budget 0.0500, fight t=2.1: "), std::string::npos) << table;
+  EXPECT_TRUE(std::filesystem::exists(plot));
+}
+
 TEST(SceneFiles, ABadSceneIsRefusedWithTheFieldNamed) {
   const std::string bad = output_path("bad_scene.json");
   std::FILE *file = std::fopen(bad.c_str(), "w");
