@@ -17,30 +17,8 @@ namespace {
 
 constexpr GrColor_t kShadowRedArgb = 0x00F00000u;  // red 240: the 565 red field 11110b
 
-struct Sphere {
-  glm::vec3 centre{0.0f};  // world
-  float radius = 0.0f;
-};
 
-const Mesh &caster_mesh(const SceneObject &object) {
-  return object.shadow_mesh.triangles.empty() ? object.mesh : object.shadow_mesh;
-}
 
-Sphere bounding_sphere(const SceneObject &object) {
-  const Mesh &mesh = caster_mesh(object);
-  glm::vec3 low(INFINITY), high(-INFINITY);
-  for (const glm::vec3 &p : mesh.positions) {
-    const glm::vec3 world = glm::vec3(object.model_to_world * glm::vec4(p, 1.0f));
-    low = glm::min(low, world);
-    high = glm::max(high, world);
-  }
-  Sphere sphere{(low + high) * 0.5f, 0.0f};
-  for (const glm::vec3 &p : mesh.positions) {
-    const glm::vec3 world = glm::vec3(object.model_to_world * glm::vec4(p, 1.0f));
-    sphere.radius = std::max(sphere.radius, glm::length(world - sphere.centre));
-  }
-  return sphere;
-}
 
 GrLOD_t lod_for(int size) {
   GrLOD_t lod = GR_LOD_256;
@@ -132,7 +110,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
                          const ProjectedShadowOptions &options) {
   const SceneObject &object = scene.objects[caster];
   const SpotLight &light = scene.lights[light_index];
-  const Sphere sphere = bounding_sphere(object);
+  const Sphere sphere = caster_bounds(object);
   LightView view;
   view.position = light.position;
   view.size = options.auto_size  ? screen_size_texture(scene, sphere)

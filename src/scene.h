@@ -49,6 +49,16 @@ struct Scene {
   int width = 640, height = 480;  // screen, pixels
 };
 
+// The mesh a caster's shadow is made from: its simplified shadow_mesh when it has one.
+const Mesh &caster_mesh(const SceneObject &object);
+
+// A sphere around a caster's shadow mesh, world space: the box's centre and the farthest vertex.
+struct Sphere {
+  glm::vec3 centre{0.0f};
+  float radius = 0.0f;
+};
+Sphere caster_bounds(const SceneObject &object);
+
 // Reads a JSON scene file (format: docs/scene_format.md). Paths inside (OBJ meshes) are relative
 // to the file. False, with `error` naming the file and the field, on any problem; `scene` is
 // left unchanged then.

@@ -44,30 +44,8 @@ double elapsed_ms(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-const Mesh &caster_mesh(const SceneObject &object) {
-  return object.shadow_mesh.triangles.empty() ? object.mesh : object.shadow_mesh;
-}
 
-struct Sphere {
-  glm::vec3 centre{0.0f};  // world
-  float radius = 0.0f;
-};
 
-Sphere bounding_sphere(const SceneObject &object) {
-  const Mesh &mesh = caster_mesh(object);
-  glm::vec3 low(INFINITY), high(-INFINITY);
-  for (const glm::vec3 &p : mesh.positions) {
-    const glm::vec3 world = glm::vec3(object.model_to_world * glm::vec4(p, 1.0f));
-    low = glm::min(low, world);
-    high = glm::max(high, world);
-  }
-  Sphere sphere{(low + high) * 0.5f, 0.0f};
-  for (const glm::vec3 &p : mesh.positions) {
-    const glm::vec3 world = glm::vec3(object.model_to_world * glm::vec4(p, 1.0f));
-    sphere.radius = std::max(sphere.radius, glm::length(world - sphere.centre));
-  }
-  return sphere;
-}
 
 // Whether `probe` may touch the shadow volume that `caster` casts from a point light at `light`.
 // Every point of the volume lies on a ray from the light through a caster point, beyond it: in
@@ -488,7 +466,7 @@ bool near_plane_may_be_in_shadow(const Scene &scene, const SpotLight &light) {
                                     half_width * half_width + half_height * half_height)};
   for (const SceneObject &object : scene.objects) {
     if (!object.casts_shadow || caster_mesh(object).triangles.empty()) continue;
-    if (may_touch_volume(light.position, bounding_sphere(object), near_plane)) return true;
+    if (may_touch_volume(light.position, caster_bounds(object), near_plane)) return true;
   }
   return false;
 }

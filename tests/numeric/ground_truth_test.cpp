@@ -107,7 +107,7 @@ TEST(GroundTruthTest, BoxShadowIsTheAnalyticSquare) {
   for (int j = 0; j < kHeight; ++j) {
     for (int i = 0; i < kWidth; ++i) {
       const std::size_t p = static_cast<std::size_t>(j) * kWidth + i;
-      const double d = inside_distance(square, {i + 0.5f, j + 0.5f});
+      const double d = inside_distance(square, {static_cast<float>(i) + 0.5f, static_cast<float>(j) + 0.5f});
       if (truth.shadow[p] == 1 && (truth.object[p] != int(kFloor) || d < -1.0)) ++outside;
       if (truth.object[p] == int(kFloor) && d > 1.0 && truth.shadow[p] != 1) ++missing;
       if (truth.object[p] == int(kBox)) {
