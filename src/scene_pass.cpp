@@ -33,7 +33,6 @@ FrameGeometry project_scene(const Scene &scene) {
     const std::size_t n = mesh.positions.size();
     projected.world.resize(n);
     projected.normal.resize(n);
-    projected.clip.resize(n);
     projected.outside.resize(n);
     projected.screen.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -41,11 +40,11 @@ FrameGeometry project_scene(const Scene &scene) {
       const glm::vec3 normal = glm::normalize(normal_matrix * mesh.normals[i]);
       projected.world[i] = world;
       projected.normal[i] = normal;
-      projected.clip[i] = frame.view_projection * glm::vec4(world, 1.0f);
-      projected.outside[i] = outcode(projected.clip[i], planes);
+      const glm::vec4 clip = frame.view_projection * glm::vec4(world, 1.0f);  // camera clip space
+      projected.outside[i] = outcode(clip, planes);
       if (projected.outside[i] == 0) {
         GrVertex &v = projected.screen[i];
-        v = to_screen(projected.clip[i], scene.width, scene.height);
+        v = to_screen(clip, scene.width, scene.height);
         const glm::vec3 color = shade_vertex(scene, world, normal, mesh.colors[i]) * 255.0f;
         v.r = color.r, v.g = color.g, v.b = color.b;
       }

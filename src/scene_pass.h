@@ -17,7 +17,6 @@ struct ProjectedObject {
   const SceneObject *object = nullptr;
   std::vector<glm::vec3> world;     // vertex positions, world space
   std::vector<glm::vec3> normal;    // unit normals, world space
-  std::vector<glm::vec4> clip;      // camera clip space
   std::vector<unsigned> outside;    // per vertex: one bit per camera clip plane it fails
   std::vector<GrVertex> screen;     // Glide screen vertices, lit (r, g, b); valid when outside == 0
 };

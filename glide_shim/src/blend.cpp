@@ -13,7 +13,6 @@ bool is_blend_factor(GrAlphaBlendFnc_t f) {
          f == GR_BLEND_ALPHA_SATURATE;  // 0xF, PREFOG_COLOR as a destination factor
 }
 
-bool is_compare(GrCmpFnc_t f) { return f >= GR_CMP_NEVER && f <= GR_CMP_ALWAYS; }
 
 }  // namespace
 
@@ -38,7 +37,7 @@ void grAlphaBlendFunction(GrAlphaBlendFnc_t rgb_sf, GrAlphaBlendFnc_t rgb_df,
 void grAlphaTestFunction(GrCmpFnc_t function) {
   auto &ctx = current();
   if (!ctx.require_open("grAlphaTestFunction")) return;
-  if (!is_compare(function)) {
+  if (!glide_shim::is_compare(function)) {
     ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
                "grAlphaTestFunction: unknown compare function " + std::to_string(function));
     return;

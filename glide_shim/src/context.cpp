@@ -63,6 +63,10 @@ void GlideContext::flush() {
   if (renderer) renderer->flush();
 }
 
+bool is_compare(GrCmpFnc_t function) {
+  return function >= GR_CMP_NEVER && function <= GR_CMP_ALWAYS;
+}
+
 Rgba8 unpack_color(GrColor_t color, GrColorFormat_t format) {
   auto byte = [color](int shift) { return static_cast<std::uint8_t>((color >> shift) & 0xFFu); };
   if (format == GR_COLORFORMAT_ABGR) return {byte(0), byte(8), byte(16), byte(24)};

@@ -166,6 +166,8 @@ class GlideContext {
 
 GlideContext &current();
 
+bool is_compare(GrCmpFnc_t function);  // a GR_CMP_* value
+
 // Decodes a GrColor_t in the window's format to 8-bit R, G, B, A.
 struct Rgba8 {
   std::uint8_t r, g, b, a;

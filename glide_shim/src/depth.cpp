@@ -57,9 +57,6 @@ FxU16 code_from_gl_depth(float depth, bool w_buffer) {
 
 using glide_shim::current;
 
-namespace {
-bool is_compare(GrCmpFnc_t function) { return function >= GR_CMP_NEVER && function <= GR_CMP_ALWAYS; }
-}  // namespace
 
 extern "C" {
 
@@ -86,7 +83,7 @@ void grDepthBufferMode(GrDepthBufferMode_t mode) {
 void grDepthBufferFunction(GrCmpFnc_t function) {
   auto &ctx = current();
   if (!ctx.require_open("grDepthBufferFunction")) return;
-  if (!is_compare(function)) {
+  if (!glide_shim::is_compare(function)) {
     ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
                "grDepthBufferFunction: unknown compare function " + std::to_string(function));
     return;

@@ -10,12 +10,6 @@
 
 using glide_shim::current;
 
-namespace glide_shim {
-bool check_texture_info(const char *function, GrLOD_t small_lod, GrLOD_t large_lod,
-                        GrAspectRatio_t aspect, GrTextureFormat_t format);
-bool check_tmu(const char *function, GrChipID_t tmu);
-}  // namespace glide_shim
-
 namespace {
 
 // True when [address, address + bytes) lies in TMU memory; otherwise reports and returns false.

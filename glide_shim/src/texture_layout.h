@@ -29,4 +29,10 @@ FxU32 mipmap_bytes(GrLOD_t small_lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
 FxU32 level_offset(GrLOD_t lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
                    GrTextureFormat_t format, FxU32 even_odd);
 
+// Argument checks shared by the texture entry points (texture.cpp): each reports the first bad
+// field as an error naming `function` and returns false.
+bool check_texture_info(const char *function, GrLOD_t small_lod, GrLOD_t large_lod,
+                        GrAspectRatio_t aspect, GrTextureFormat_t format);
+bool check_tmu(const char *function, GrChipID_t tmu);
+
 }  // namespace glide_shim

@@ -162,25 +162,13 @@ TEST_F(CombineTest, ColorCombineMatchesReferenceForEveryConfiguration) {
             const voodoo_ref::Rgba constant = set_random_constant(random);
             grColorCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
             draw_pixels();
-            const std::vector<FxU16> frame = read_buffer();
             ++configurations;
-            int bad = 0;
-            for (int y = 0; y < kHeight && bad == 0; ++y) {
-              for (int x = 0; x < kWidth && bad == 0; ++x) {
-                const voodoo_ref::Rgba want =
-                    voodoo_ref::combine_fbi(color, alpha, inputs(x, y, constant));
-                const FxU16 got = frame[static_cast<std::size_t>(y * kWidth + x)];
-                if (!within_one_level(red5(got), want.r, 5) ||
-                    !within_one_level(green6(got), want.g, 6) ||
-                    !within_one_level(blue5(got), want.b, 5)) {
-                  ++bad;
-                  ADD_FAILURE() << describe("grColorCombine", color) << " at (" << x << "," << y
-                                << "): want " << want << ", got 565 (" << red5(got) << ","
-                                << green6(got) << "," << blue5(got) << ")";
-                }
-              }
-            }
-            mismatches += bad;
+            mismatches += compare(describe("grColorCombine", color), read_buffer(),
+                                  [&](int x, int y) {
+                                    return voodoo_ref::combine_fbi(color, alpha,
+                                                                   inputs(x, y, constant));
+                                  },
+                                  true);
             if (mismatches > 5) return;
           }
   expect_no_error();

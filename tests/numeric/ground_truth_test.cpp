@@ -6,6 +6,7 @@
 #include "ground_truth.h"
 #include "lighting.h"
 #include "projection.h"
+#include "technique_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -23,28 +24,10 @@ constexpr int kWidth = 320, kHeight = 240;
 constexpr std::size_t kFloor = 0, kBox = 1;
 
 gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
-  gs::SceneObject o;
-  o.name = name;
-  o.mesh = std::move(mesh);
-  o.model_to_world = glm::translate(glm::mat4(1.0f), at);
-  return o;
+  return placed_object(name, std::move(mesh), at);
 }
 
-// As TechniqueTest::box_over_floor: a unit box spanning y 1..2 over a 10 m floor, light at y 8.
-gs::Scene box_over_floor() {
-  gs::Scene scene;
-  scene.width = kWidth, scene.height = kHeight;
-  scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
-  scene.objects[0].casts_shadow = false;
-  scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
-  gs::SpotLight light;
-  light.position = {0, 8, 0};
-  light.target = {0, 0, 0};
-  scene.lights.push_back(light);
-  scene.camera.position = {0, 6, 6};
-  scene.camera.target = {0, 0.5f, 0};
-  return scene;
-}
+gs::Scene box_over_floor() { return box_over_floor_scene(kWidth, kHeight); }
 
 gs::GroundTruth truth_of(const gs::Scene &scene) {
   gs::GroundTruth truth;

@@ -61,7 +61,7 @@ TechniqueTest::Mask TechniqueTest::both(const Mask &a, const Mask &b) {
   return out;
 }
 
-gs::SceneObject TechniqueTest::object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
+gs::SceneObject placed_object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
   gs::SceneObject o;
   o.name = name;
   o.mesh = std::move(mesh);
@@ -69,12 +69,12 @@ gs::SceneObject TechniqueTest::object(const std::string &name, gs::Mesh mesh, co
   return o;
 }
 
-gs::Scene TechniqueTest::box_over_floor() {
+gs::Scene box_over_floor_scene(int width, int height) {
   gs::Scene scene;
-  scene.width = kWidth, scene.height = kHeight;
-  scene.objects.push_back(object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
+  scene.width = width, scene.height = height;
+  scene.objects.push_back(placed_object("floor", gs::make_plane(10.0f, 20), {0, 0, 0}));
   scene.objects[0].casts_shadow = false;
-  scene.objects.push_back(object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
+  scene.objects.push_back(placed_object("box", gs::make_box(glm::vec3(0.5f)), {0, 1.5f, 0}));
   gs::SpotLight light;
   light.position = {0, 8, 0};
   light.target = {0, 0, 0};

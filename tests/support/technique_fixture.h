@@ -13,6 +13,12 @@
 #include <string>
 #include <vector>
 
+// Scene builders, also for tests that need no Glide window.
+gs::SceneObject placed_object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at);
+// A 1 m box centred 1.5 m above a 10 m floor (which casts nothing), the light straight above
+// at 8 m, the camera looking down at about 45 degrees; a width x height screen.
+gs::Scene box_over_floor_scene(int width, int height);
+
 class TechniqueTest : public ::testing::Test {
  public:
   static constexpr int kWidth = 320, kHeight = 240;
@@ -34,8 +40,8 @@ class TechniqueTest : public ::testing::Test {
   static int count(const Mask &a, const Mask &b);  // pixels in both
   static Mask both(const Mask &a, const Mask &b);
 
-  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at);
-  // A 1 m box centred 1.5 m above a 10 m floor (which casts nothing), the light straight above
-  // at 8 m, the camera looking down at about 45 degrees.
-  static gs::Scene box_over_floor();
+  static gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
+    return placed_object(name, std::move(mesh), at);
+  }
+  static gs::Scene box_over_floor() { return box_over_floor_scene(kWidth, kHeight); }
 };
