@@ -38,9 +38,38 @@ GLIDESHIM_API void glideShimClearError(void);
 /* "GLIDESHIM_ERR_INVALID_ENUM" and so on; "unknown" for values outside the enum. */
 GLIDESHIM_API const char *glideShimErrorName(GlideShimError error);
 
-/* The backend that made the current context: "osmesa" or "egl"; "" with no window open.
- * Chosen at grSstWinOpen from GLIDESHIM_BACKEND (osmesa by default). */
+/* The backend that made the current context: "osmesa", "egl" or "sdl" (a window); "" with no
+ * window open. Chosen at grSstWinOpen from GLIDESHIM_BACKEND (osmesa by default). */
 GLIDESHIM_API const char *glideShimBackendName(void);
+
+/* Keyboard input for interactive programs. Glide 2.x has none: DOS programs read the keyboard
+ * themselves (the SDK's tlib through tlKbHit/tlGetCH). With GLIDESHIM_BACKEND=sdl the window's
+ * keys are queued (up to 64; further keys are dropped until the program reads some) and
+ * glideShimPollKey returns the oldest, without waiting: a printable key as its ASCII character
+ * (Shift and the keyboard layout applied; non-ASCII characters are not passed on), the keys
+ * below as their codes, 0 when the queue is empty. Headless backends, and no open window,
+ * always give 0. The queue is filled at every grBufferSwap and every glideShimPollKey or
+ * glideShimWindowClosed call. */
+#define GLIDESHIM_KEY_NONE 0
+#define GLIDESHIM_KEY_BACKSPACE 8
+#define GLIDESHIM_KEY_TAB 9
+#define GLIDESHIM_KEY_ENTER 13 /* Return and keypad Enter */
+#define GLIDESHIM_KEY_ESCAPE 27
+#define GLIDESHIM_KEY_DELETE 127
+#define GLIDESHIM_KEY_LEFT 0x100
+#define GLIDESHIM_KEY_RIGHT 0x101
+#define GLIDESHIM_KEY_UP 0x102
+#define GLIDESHIM_KEY_DOWN 0x103
+#define GLIDESHIM_KEY_PAGE_UP 0x104
+#define GLIDESHIM_KEY_PAGE_DOWN 0x105
+#define GLIDESHIM_KEY_HOME 0x106
+#define GLIDESHIM_KEY_END 0x107
+#define GLIDESHIM_KEY_INSERT 0x108
+#define GLIDESHIM_KEY_F1 0x110 /* F1..F12 are GLIDESHIM_KEY_F1 + 0..11 */
+GLIDESHIM_API int glideShimPollKey(void);
+/* FXTRUE once the user has asked to close the window (its close button); the window stays
+ * open until grSstWinClose, so the program decides when to stop. FXFALSE headless. */
+GLIDESHIM_API FxBool glideShimWindowClosed(void);
 
 /* The size grSstWinOpen(..., GR_RESOLUTION_NONE, ...) opens, for sizes the Voodoo's resolution
  * list lacks (default 640x480). Each side 1..2048; FXFALSE and nothing changed otherwise. */

@@ -15,10 +15,12 @@ std::string GlFunctions::load(const std::function<void *(const char *)> &lookup)
   return "";
 }
 
-std::unique_ptr<Backend> create_backend(BackendKind kind, std::string &error) {
+std::unique_ptr<Backend> create_backend(BackendKind kind, int width, int height,
+                                        std::string &error) {
   switch (kind) {
     case BackendKind::OSMesa: return create_osmesa_backend(error);
     case BackendKind::EglSurfaceless: return create_egl_backend(error);
+    case BackendKind::SdlWindow: return create_sdl_backend(width, height, error);
   }
   error = "unknown backend";
   return nullptr;
@@ -34,7 +36,12 @@ bool backend_from_environment(BackendKind &kind, std::string &error) {
     kind = BackendKind::EglSurfaceless;
     return true;
   }
-  error = std::string("GLIDESHIM_BACKEND='") + value + "' is not a backend (use osmesa or egl)";
+  if (std::strcmp(value, "sdl") == 0 || std::strcmp(value, "window") == 0) {
+    kind = BackendKind::SdlWindow;
+    return true;
+  }
+  error = std::string("GLIDESHIM_BACKEND='") + value +
+          "' is not a backend (use osmesa, egl, or sdl for a window)";
   return false;
 }
 

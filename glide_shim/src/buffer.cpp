@@ -6,6 +6,7 @@
 #include "gl_renderer.h"
 
 #include "texture_layout.h"
+#include "window.h"
 
 #include <cstdio>
 #include <cstring>
@@ -55,6 +56,7 @@ void grBufferSwap(int swap_interval) {
     return;
   }
   ctx.renderer->swap_buffers();
+  glide_shim::show_front_buffer(ctx, swap_interval);
   const int frame = ctx.display.swaps++;
   const char *dir = std::getenv("GLIDESHIM_DUMP_DIR");
   if (dir != nullptr && *dir != '\0') {

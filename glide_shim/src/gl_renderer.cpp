@@ -85,7 +85,7 @@ GlRenderer::~GlRenderer() {
 
 std::unique_ptr<GlRenderer> GlRenderer::create(GlideContext &context, BackendKind kind,
                                                int width, int height, std::string &error) {
-  std::unique_ptr<Backend> backend = create_backend(kind, error);
+  std::unique_ptr<Backend> backend = create_backend(kind, width, height, error);
   if (!backend) return nullptr;
   std::unique_ptr<GlRenderer> renderer(
       new GlRenderer(context, std::move(backend), width, height));

@@ -36,6 +36,7 @@ class GlRenderer {
   ~GlRenderer();
 
   const char *backend_name() const { return backend_->name(); }
+  Backend &backend() { return *backend_; }
   const GlFunctions &gl() const { return backend_->gl; }
 
   void queue(Primitive primitive, const ShimVertex *vertices, int count);
