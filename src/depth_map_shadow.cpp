@@ -5,8 +5,10 @@
 #include "depth_map_shadow.h"
 
 #include "gl_api.h"
+#include "gl_light_units.h"
 #include "lighting.h"
 #include "projection.h"
+#include "spotlight.h"
 
 #include <glide_shim.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,6 +134,7 @@ class Passes {
   void bind_shadow_units(std::size_t light, GLenum compare);
   void release_shadow_units();
   void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
+  float farthest_from(const SpotLight &light) const;  // largest light-space depth, metres
 
   const GlApi &gl_;
   const Scene &scene_;
@@ -284,16 +288,24 @@ void Passes::lit_passes() {
   gl_.glBlendFunc(GL_SRC_ALPHA, GL_ONE);  // adds the light x the lit fraction of the 2x2
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     if (scene_.lights[light].is_projector()) continue;  // slides light only through their pass
-    Scene one_light;  // shade_vertex for this light alone, without the ambient
-    one_light.ambient = glm::vec3(0.0f);
-    one_light.lights = {scene_.lights[light]};
+    const SpotLight &spot = scene_.lights[light];
     bind_shadow_units(light, GL_LEQUAL);
+    // A beam map and exact attenuation are applied per pixel by units 2 and 3; the vertex
+    // colours carry the rest of the light.
+    std::optional<GlLightUnits> beam;
+    if (GlLightUnits::needed_for(spot)) {
+      beam.emplace(gl_, spot, farthest_from(spot));
+      beam->bind();
+    }
+    const bool attenuation_per_pixel =
+        beam && spot.attenuation.mode == AttenuationMode::PerPixel;
     for (const WorldMesh &mesh : meshes_) {
       std::vector<glm::vec4> colors;
       for (std::size_t i = 0; i < mesh.position.size(); ++i) {
-        colors.emplace_back(
-            shade_vertex(one_light, mesh.position[i], mesh.normal[i], mesh.object->mesh.colors[i]),
-            1.0f);
+        const glm::vec3 light_term =
+            vertex_light_term(spot, mesh.position[i], mesh.normal[i], attenuation_per_pixel);
+        colors.emplace_back(glm::min(mesh.object->mesh.colors[i] * light_term, glm::vec3(1.0f)),
+                            1.0f);
       }
       gl_.glActiveTexture(GL_TEXTURE0);
       if (maps_[light] != 0 && mesh.object->receives_shadow) {
@@ -303,9 +315,17 @@ void Passes::lit_passes() {
       }
       draw(mesh, colors);
     }
+    if (beam) beam->release();
   }
   release_shadow_units();
   gl_.glDisable(GL_BLEND);
+}
+
+float Passes::farthest_from(const SpotLight &light) const {
+  float farthest = 0.0f;
+  for (const WorldMesh &mesh : meshes_)
+    for (const glm::vec3 &p : mesh.position) farthest = std::max(farthest, axial_distance(light, p));
+  return farthest;
 }
 
 void Passes::mask_passes() {

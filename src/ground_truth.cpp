@@ -6,6 +6,7 @@
 
 #include "lighting.h"
 #include "projection.h"
+#include "spotlight.h"
 
 #include <embree3/rtcore.h>
 
@@ -279,7 +280,8 @@ void cast_pixel(const Caster &c, int i, int j, GroundTruth &truth) {
       const glm::vec3 p(point);
       const glm::vec3 to_light = glm::normalize(light.position - p);
       light_sum += light.color * (std::max(0.0f, glm::dot(normal, to_light)) *
-                                  spot_factor(light, p));
+                                  spot_factor(light, p) *
+                                  distance_attenuation(light, axial_distance(light, p)));
     }
   }
   truth.shadow[pixel] = by_other_any ? 1 : 0;

@@ -1,6 +1,8 @@
-// Spotlight shading: Lambert diffuse times a cone factor that falls from 1 to 0 over the outer
-// tenth of the cone's half-angle.
+// Spotlight shading: Lambert diffuse times the beam (a cone factor that falls from 1 to 0 over the
+// outer tenth of the cone's half-angle, or the light's beam map) times the distance attenuation.
 #include "lighting.h"
+
+#include "spotlight.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -10,6 +12,10 @@
 namespace gs {
 
 float spot_factor(const SpotLight &light, const glm::vec3 &world) {
+  if (light.has_beam_map()) {
+    glm::vec2 uv;
+    return beam_coordinates(light, world, uv) ? beam_intensity(light, uv) : 0.0f;
+  }
   const glm::vec3 axis = glm::normalize(light.target - light.position);
   const glm::vec3 to_point = world - light.position;
   const float distance = glm::length(to_point);
@@ -20,6 +26,15 @@ float spot_factor(const SpotLight &light, const glm::vec3 &world) {
   return std::clamp((cos_angle - outer) / std::max(inner - outer, 1e-6f), 0.0f, 1.0f);
 }
 
+glm::vec3 vertex_light_term(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal,
+                            bool attenuation_per_pixel) {
+  const float diffuse = std::max(0.0f, glm::dot(normal, glm::normalize(light.position - world)));
+  const float beam = light.has_beam_map() ? 1.0f : spot_factor(light, world);
+  const float attenuation =
+      attenuation_per_pixel ? 1.0f : distance_attenuation(light, axial_distance(light, world));
+  return light.color * (diffuse * beam * attenuation);
+}
+
 glm::vec3 shade_vertex(const Scene &scene, const glm::vec3 &world, const glm::vec3 &normal,
                        const glm::vec3 &albedo) {
   glm::vec3 light_sum = scene.ambient;
@@ -27,7 +42,8 @@ glm::vec3 shade_vertex(const Scene &scene, const glm::vec3 &world, const glm::ve
     if (light.is_projector()) continue;  // it lights through its slide pass only
     const glm::vec3 to_light = glm::normalize(light.position - world);
     const float diffuse = std::max(0.0f, glm::dot(normal, to_light));
-    light_sum += light.color * (diffuse * spot_factor(light, world));
+    light_sum += light.color * (diffuse * spot_factor(light, world) *
+                                distance_attenuation(light, axial_distance(light, world)));
   }
   return glm::min(albedo * light_sum, glm::vec3(1.0f));
 }

@@ -4,6 +4,7 @@
 
 #include "mesh.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,22 @@ struct SceneObject {
   bool receives_shadow = true;
 };
 
+// An image a light projects (a slide, or a beam's cross-section) read from a file: RGB 0..1, a
+// square power-of-two side, row 0 at the top.
+struct ProjectedImage {
+  int side = 0;
+  std::vector<glm::vec3> rgb;
+};
+
+// How a spotlight's light falls off with distance (Segal et al. 3.2): none, evaluated per vertex
+// and interpolated (cheap), or per pixel as a function of the light-space depth (exact; the
+// Glide renderer then needs the frame's cleared accumulation, so one such light per scene).
+enum class AttenuationMode { None, PerVertex, PerPixel };
+struct DistanceAttenuation {
+  AttenuationMode mode = AttenuationMode::None;
+  float constant = 1.0f, linear = 0.0f, quadratic = 0.0f;  // 1 / (c + l d + q d^2), d in metres
+};
+
 struct SpotLight {
   glm::vec3 position{0.0f, 5.0f, 0.0f};  // world
   glm::vec3 target{0.0f};                // world
@@ -26,9 +43,17 @@ struct SpotLight {
   float shadow_strength = 170.0f / 255.0f;  // the article's iterated alpha 170
   int shadow_size = 256;                    // shadow texture side, texels
   // Non-empty: a slide projector (Segal et al. 1992) showing this built-in slide (see
-  // slide_projector.h); it lights only through its slide and casts no shadow.
+  // slide_projector.h) or `slide_image`; it lights only through its slide and casts no shadow.
   std::string slide;
+  std::shared_ptr<const ProjectedImage> slide_image;  // set when `slide` names an image file
+  // Empty: the smooth cone (spot_factor in lighting.h), shaded per vertex. Otherwise the beam's
+  // cross-section (spotlight.h: round, square, gobo, lens, or `beam_image`), which the Glide
+  // scene pass projects as a texture per pixel.
+  std::string beam;
+  std::shared_ptr<const ProjectedImage> beam_image;  // set when `beam` names an image file
+  DistanceAttenuation attenuation;
   bool is_projector() const { return !slide.empty(); }
+  bool has_beam_map() const { return !beam.empty(); }
 };
 
 struct Camera {

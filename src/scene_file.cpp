@@ -2,19 +2,18 @@
 // checked against its documented type and range; the first problem ends the load with a message
 // naming the file and the field's JSON path, and nothing reaches the caller's Scene.
 #include "fighter.h"
+#include "input_file.h"
 #include "ring.h"
 #include "scene.h"
 #include "slide_projector.h"
+#include "spotlight.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
@@ -37,6 +36,9 @@ constexpr unsigned kMaxDivisions = 1000;  // plane, heightfield: 2 * 1000^2 tria
 constexpr unsigned kMaxSlices = 1000;     // sphere, cylinder
 constexpr unsigned kMaxStacks = 1000;     // sphere: 2 * 1000 * 1000 triangles at most
 constexpr unsigned kMaxScreenSide = 2048;
+constexpr std::size_t kMaxLights = 16;  // each light is at least one more pass over the scene
+constexpr std::size_t kMaxSceneFileBytes = 16u << 20;  // far above any hand-written scene
+constexpr int kProjectedImageSide = 128;  // slides and beams from files: 128 x 128 texels
 
 // A problem in the file: the JSON path of the field ("objects[2].mesh.shape"; empty for the
 // file as a whole) and what is wrong with it. Thrown inside this file only; load_scene catches it.
@@ -192,22 +194,9 @@ class DuplicateKeyFinder {
   }
 };
 
-std::string read_file(const std::string &path) {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE *)> file(std::fopen(path.c_str(), "rb"),
-                                                              std::fclose);
-  if (!file) throw SceneError{{}, std::string("cannot open: ") + std::strerror(errno)};
-  std::string contents;
-  char buffer[1 << 16];
-  std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) contents.append(buffer, got);
-  // A directory opens but fails here (EISDIR).
-  if (std::ferror(file.get()))
-    throw SceneError{{}, std::string("cannot read: ") + std::strerror(errno)};
-  return contents;
-}
-
 json parse_file(const std::string &path) {
-  const std::string contents = read_file(path);
+  std::string contents, error;
+  if (!read_input_file(path, kMaxSceneFileBytes, contents, error)) throw SceneError{{}, error};
   DuplicateKeyFinder duplicates;
   json document;
   try {
@@ -260,9 +249,50 @@ void read_camera(const Field &f, Camera &camera) {
   }
 }
 
-SpotLight read_light(const Field &f) {
-  f.require_object_with_keys(
-      {"position", "target", "cone_degrees", "color", "shadow_strength", "shadow_size", "slide"});
+// A slide or beam: a built-in pattern's name, or an image file relative to the scene file.
+std::shared_ptr<const ProjectedImage> read_light_image(const Field &f, bool (*is_pattern)(const std::string &),
+                                                       const char *patterns,
+                                                       const std::filesystem::path &scene_dir,
+                                                       std::string &name) {
+  name = text(f);
+  if (is_pattern(name)) return nullptr;
+  if (name.empty() || std::filesystem::path(name).extension().empty())
+    f.fail(std::string("must be one of the built-in patterns (") + patterns +
+           ") or an image file's path");
+  const std::string path = (scene_dir / name).lexically_normal().string();
+  auto image = std::make_shared<ProjectedImage>();
+  std::string error;
+  if (!load_projected_image(path, kProjectedImageSide, *image, error)) f.fail(error);
+  return image;
+}
+
+DistanceAttenuation read_attenuation(const Field &f) {
+  f.require_object_with_keys({"mode", "constant", "linear", "quadratic"});
+  DistanceAttenuation attenuation;
+  const std::string mode = text(f["mode"]);
+  if (mode == "vertex") {
+    attenuation.mode = AttenuationMode::PerVertex;
+  } else if (mode == "exact") {
+    attenuation.mode = AttenuationMode::PerPixel;
+  } else if (mode == "none") {
+    attenuation.mode = AttenuationMode::None;
+  } else {
+    f["mode"].fail("must be \"none\", \"vertex\" or \"exact\"");
+  }
+  auto non_negative = [](float v) { return v >= 0.0f; };
+  if (f.has("constant")) attenuation.constant = number(f["constant"], "a number >= 0", non_negative);
+  if (f.has("linear")) attenuation.linear = number(f["linear"], "a number >= 0", non_negative);
+  if (f.has("quadratic"))
+    attenuation.quadratic = number(f["quadratic"], "a number >= 0", non_negative);
+  if (!(attenuation.constant > 0.0f) && !(attenuation.linear > 0.0f) &&
+      !(attenuation.quadratic > 0.0f))
+    f.fail("constant, linear and quadratic are all 0: the light would be infinitely bright");
+  return attenuation;
+}
+
+SpotLight read_light(const Field &f, const std::filesystem::path &scene_dir) {
+  f.require_object_with_keys({"position", "target", "cone_degrees", "color", "shadow_strength",
+                              "shadow_size", "slide", "beam", "attenuation"});
   SpotLight light;
   light.position = position(f["position"]);
   light.target = position(f["target"]);
@@ -282,11 +312,16 @@ SpotLight read_light(const Field &f) {
     light.shadow_size = static_cast<int>(v);
   }
   if (f.has("slide")) {
-    const Field slide = f["slide"];
-    if (!slide.value.is_string() || !is_slide_pattern(slide.value.get<std::string>()))
-      slide.fail("must be one of the built-in slides: checker, rings, grid");
-    light.slide = slide.value.get<std::string>();
+    if (f.has("beam")) f["beam"].fail("a slide projector has no beam map: give slide or beam");
+    light.slide_image =
+        read_light_image(f["slide"], is_slide_pattern, "checker, rings, grid", scene_dir, light.slide);
   }
+  if (f.has("beam"))
+    light.beam_image =
+        read_light_image(f["beam"], is_beam_pattern, "round, square, gobo, lens", scene_dir, light.beam);
+  if (f.has("attenuation")) light.attenuation = read_attenuation(f["attenuation"]);
+  if (light.attenuation.mode == AttenuationMode::PerPixel && !light.has_beam_map())
+    f["attenuation"]["mode"].fail("\"exact\" needs a beam map: give \"beam\" (or use \"vertex\")");
   return light;
 }
 
@@ -457,6 +492,23 @@ SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
   return object;
 }
 
+// The Glide renderer forms a per-pixel attenuated spotlight in the frame's cleared accumulation
+// (one texture unit cannot sample beam and attenuation at once), so only one light can have it.
+void check_one_exact_attenuation(const Field &lights, const std::vector<SpotLight> &read) {
+  std::size_t first = read.size();
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    if (read[i].attenuation.mode != AttenuationMode::PerPixel) continue;
+    if (first == read.size()) {
+      first = i;
+      continue;
+    }
+    lights.item(i)["attenuation"]["mode"].fail(
+        "\"exact\" is already used by " + lights.item(first).path +
+        ": one light per scene can have exact attenuation (a Voodoo's single texture unit); use "
+        "\"vertex\"");
+  }
+}
+
 void read_scene(const json &document, const std::filesystem::path &scene_dir, Scene &scene) {
   const Field root{document, ""};
   if (!document.is_object()) root.fail("the file must hold a JSON object");
@@ -471,8 +523,12 @@ void read_scene(const json &document, const std::filesystem::path &scene_dir, Sc
   if (root.has("lights")) {
     const Field lights = root["lights"];
     if (!lights.value.is_array()) lights.fail("must be an array");
+    if (lights.value.size() > kMaxLights)
+      lights.fail("has " + std::to_string(lights.value.size()) + " lights, more than the limit of " +
+                  std::to_string(kMaxLights));
     for (std::size_t i = 0; i < lights.value.size(); ++i)
-      scene.lights.push_back(read_light(lights.item(i)));
+      scene.lights.push_back(read_light(lights.item(i), scene_dir));
+    check_one_exact_attenuation(lights, scene.lights);
   }
 
   const Field objects = root["objects"];

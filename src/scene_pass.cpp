@@ -111,7 +111,7 @@ void set_scene_state() {
 }
 
 void render_scene(const Scene &scene, const FrameGeometry &frame) {
-  if (has_slide_projectors(scene)) {
+  if (needs_projective_passes(scene)) {
     render_scene_with_projectors(scene, frame);
     return;
   }

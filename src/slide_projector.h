@@ -1,8 +1,10 @@
-// Segal et al. 1992's slide projector on the Glide shim: the scene's surfaces lit through
-// projected slides, in the paper's passes: depth only; where z equals the stored depth, add each
-// projector's slide colour (and the other lights' light); then modulate by the surface colour.
-// The slide's (s, t) are the paper's projective coordinates, divided per pixel by the TMU
-// (GR_STWHINT_W_DIFF_TMU0). Surfaces behind a projector or facing away get nothing from it.
+// Segal et al. 1992's projective-texture lights on the Glide shim: slide projectors (3.1) and
+// spotlights with beam maps (3.2), in the paper's passes: depth only; where z equals the stored
+// depth, add each light's projected texture times its light (and the other lights' light); then
+// modulate by the surface colour. The texture's (s, t) are the paper's projective coordinates,
+// divided per pixel by the TMU (GR_STWHINT_W_DIFF_TMU0). Surfaces behind a light or facing away
+// get nothing from it. A spotlight's attenuation with distance is per vertex, or exact per pixel
+// for one spotlight, formed first in the cleared accumulation (see spotlight.h).
 #pragma once
 
 #include "scene.h"
@@ -16,11 +18,13 @@
 namespace gs {
 
 bool is_slide_pattern(const std::string &name);  // checker, rings, grid
-// A 64x64 RGB565 slide with a black outer texel, so clamp mode adds nothing outside it.
-std::vector<FxU16> slide_texels(const std::string &name);
+// A projector's RGB565 slide, side x side (64 for the built-in slides, 128 from an image file),
+// with a black outer texel, so clamp mode adds nothing outside it.
+std::vector<FxU16> slide_texels(const SpotLight &projector, int &side);
 
-bool has_slide_projectors(const Scene &scene);
-// The scene pass when projectors light the scene (render_scene calls it).
+// True when a light projects a texture (a slide or a beam map), so the scene needs these passes.
+bool needs_projective_passes(const Scene &scene);
+// The scene pass when projective lights light the scene (render_scene calls it).
 void render_scene_with_projectors(const Scene &scene, const FrameGeometry &frame);
 
 }  // namespace gs

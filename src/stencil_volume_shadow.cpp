@@ -5,8 +5,10 @@
 #include "stencil_volume_shadow.h"
 
 #include "gl_api.h"
+#include "gl_light_units.h"
 #include "lighting.h"
 #include "projection.h"
+#include "spotlight.h"
 
 #include <glide_shim.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -15,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -356,12 +359,24 @@ class StencilVolumeShadow final : public ShadowTechnique {
   // themselves lies in their volume, which is physically right; their lit faces are kept lit by
   // count_volumes' depth test. A caster drawn from a simplified shadow_mesh (the fighters) is
   // not its volume's exact surface, so a few pixels near its silhouette may darken.
+  // A beam map and exact attenuation are applied per pixel by texture units 2 and 3
+  // (gl_light_units.h); the vertex colours carry the rest of the light.
   void draw_lit_pass(const SpotLight &light, FrameData &frame) {
-    const Scene alone = light_alone(light);
+    std::optional<GlLightUnits> beam;
+    float farthest = 0.0f;  // light-space depth, metres
+    for (const Surface &surface : frame.surfaces)
+      for (const glm::vec3 &p : surface.world) farthest = std::max(farthest, axial_distance(light, p));
+    if (GlLightUnits::needed_for(light)) {
+      beam.emplace(gl_, light, farthest);
+      beam->bind();
+    }
+    const bool attenuation_per_pixel = beam && light.attenuation.mode == AttenuationMode::PerPixel;
     for (Surface &surface : frame.surfaces) {
       for (std::size_t i = 0; i < surface.world.size(); ++i) {
-        surface.color[i] = glm::vec4(shade_vertex(alone, surface.world[i], surface.normal[i],
-                                                  surface.object->mesh.colors[i]), 1.0f);
+        const glm::vec3 term =
+            vertex_light_term(light, surface.world[i], surface.normal[i], attenuation_per_pixel);
+        surface.color[i] =
+            glm::vec4(glm::min(surface.object->mesh.colors[i] * term, glm::vec3(1.0f)), 1.0f);
       }
     }
     gl_.glEnable(GL_BLEND);
@@ -372,6 +387,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
     gl_.glDisable(GL_STENCIL_TEST);
     draw_surfaces(gl_, frame.surfaces, false);
     gl_.glDisable(GL_BLEND);
+    if (beam) beam->release();
   }
 
   TechniqueOptions::VolumeMode mode_;

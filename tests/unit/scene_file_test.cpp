@@ -264,6 +264,16 @@ const BadScene kBadScenes[] = {
     {"top_level_array.json", "", "must hold a JSON object"},
     {"malformed_trailing_comma.json", "", "malformed JSON: parse error at line 3, column"},
     {"nan_literal.json", "", "malformed JSON: parse error at line 3, column"},
+    {"unknown_beam.json", "lights[0].beam",
+     "must be one of the built-in patterns (round, square, gobo, lens) or an image file's path"},
+    {"exact_without_beam.json", "lights[0].attenuation.mode", "\"exact\" needs a beam map"},
+    {"two_exact_lights.json", "lights[1].attenuation.mode",
+     "\"exact\" is already used by lights[0]: one light per scene"},
+    {"slide_and_beam.json", "lights[0].beam", "give slide or beam"},
+    {"attenuation_all_zero.json", "lights[0].attenuation", "all 0"},
+    {"attenuation_unknown_mode.json", "lights[0].attenuation.mode",
+     "must be \"none\", \"vertex\" or \"exact\""},
+    {"missing_beam_image.json", "lights[0].beam", "no_such_beam.png: cannot read the image"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};
@@ -295,6 +305,41 @@ TEST(SceneFile, EveryBadSceneFileHasAnExpectedMessage) {
   for (const auto &entry : std::filesystem::directory_iterator(kBadScenesDir))
     on_disk.insert(entry.path().filename().string());
   EXPECT_EQ(listed, on_disk);
+}
+
+TEST(SceneFile, SpotlightBeamsAndAttenuationLoad) {
+  const gs::Scene scene = load_or_fail(kSourceDir + "/scenes/spotlight.json");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].beam, "gobo");
+  EXPECT_EQ(scene.lights[0].beam_image, nullptr);
+  EXPECT_EQ(scene.lights[0].attenuation.mode, gs::AttenuationMode::PerPixel);
+  EXPECT_FLOAT_EQ(scene.lights[0].attenuation.constant, 0.2f);
+  EXPECT_FLOAT_EQ(scene.lights[0].attenuation.linear, 0.0f);
+  EXPECT_FLOAT_EQ(scene.lights[0].attenuation.quadratic, 0.03f);
+}
+
+TEST(SceneFile, BeamAndSlideImagesLoadRelativeToTheSceneFile) {
+  // tests/data/beam_gradient.png: 16 x 16, white at the top row fading to black at the bottom.
+  // The scene in a scratch directory beside a copy of the image: a path relative to the scene.
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "image_lights";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(std::string(GLIDESHADOWS_TEST_DATA_DIR) + "/beam_gradient.png",
+                             dir / "beam_gradient.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  const std::string path = (dir / "scene.json").string();
+  std::ofstream(path) << R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]},
+    "lights": [{"position": [0, 5, 0], "target": [0, 0, 0], "beam": "beam_gradient.png"},
+               {"position": [0, 5, 1], "target": [0, 0, 0], "slide": "beam_gradient.png"}],
+    "objects": [{"mesh": {"shape": "box"}}]})";
+  const gs::Scene scene = load_or_fail(path);
+  ASSERT_EQ(scene.lights.size(), 2u);
+  ASSERT_NE(scene.lights[0].beam_image, nullptr);
+  ASSERT_NE(scene.lights[1].slide_image, nullptr);
+  const gs::ProjectedImage &image = *scene.lights[0].beam_image;
+  ASSERT_EQ(image.side, 128);
+  EXPECT_GT(image.rgb[0].r, 0.9f);                      // top row: white
+  EXPECT_LT(image.rgb[127 * 128].r, 0.1f);              // bottom row: black
+  EXPECT_GT(image.rgb[64 * 128].r, image.rgb[96 * 128].r);  // fading downwards
 }
 
 TEST(SceneFile, FailedLoadLeavesTheSceneUnchanged) {
