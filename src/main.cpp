@@ -1,6 +1,7 @@
 // glideshadows: the command-line tool. `demo` renders the fight headless with shadows; `render`
 // renders a scene file and optionally its shadow mask. Every subcommand has --help.
 #include "fight_scene.h"
+#include "figures.h"
 #include "ground_truth.h"
 #include "metrics.h"
 #include "plot.h"
@@ -505,7 +506,14 @@ int main(int argc, char **argv) {
   bench->add_option("--budget", bench_budget, "name the cheapest configuration with at most this error (fraction)")
       ->check(CLI::Range(0.0, 1.0));
 
+  CLI::App *figures = app.add_subcommand("figures", "reproduce the articles' figures as PNGs with checks and an index page");
+  std::string figures_out = "out/figures", figures_only;
+  figures->add_option("--out", figures_out, "directory for the PNGs and index.html")->capture_default_str();
+  figures->add_option("--only", figures_only,
+                      "comma-separated figures: names such as nguyen-7, sgi-3, everitt-5, or bare numbers for Nguyen's");
+
   CLI11_PARSE(app, argc, argv);
+  if (figures->parsed()) return gs::run_figures(figures_out, figures_only, stdout);
   if (bench->parsed()) {
     return run_bench(bench_scenes, bench_quick, bench_repeats, bench_csv, bench_plot, bench_budget);
   }

@@ -221,6 +221,25 @@ bool finite_point(const PlotPoint &p) {
 
 // Non-finite points are left off the front: they cannot be placed on an axis.
 // O(n^2), which is fine for the few dozen configurations a benchmark plots.
+void draw_bitmap_text(std::vector<unsigned char> &rgb, int width, int height, int x, int y,
+                      const std::string &text, int scale, const unsigned char colour[3]) {
+  for (char c : text) {
+    const Glyph &g = glyph_for(c);
+    for (int row = 0; row < 5 * scale; ++row) {
+      for (int col = 0; col < 3 * scale; ++col) {
+        const int px = x + col, py = y + row;
+        if (px < 0 || py < 0 || px >= width || py >= height) continue;
+        if ((g.rows[row / scale] & (4 >> (col / scale))) == 0) continue;
+        const auto at = static_cast<std::size_t>(py * width + px) * 3;
+        for (int channel = 0; channel < 3; ++channel) rgb[at + channel] = colour[channel];
+      }
+    }
+    x += 4 * scale;
+  }
+}
+
+int bitmap_text_width(const std::string &text, int scale) { return text_width(text, scale); }
+
 std::vector<std::size_t> pareto_front(const std::vector<PlotPoint> &points) {
   std::vector<std::size_t> front;
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -22,4 +22,11 @@ std::vector<std::size_t> pareto_front(const std::vector<PlotPoint> &points);
 bool write_plot(const std::vector<PlotPoint> &points, const std::string &title,
                 const std::string &path, std::string &error);
 
+// The plot's 3x5 bitmap font (upper case, digits, a few signs; '?' for the rest) for other
+// images: `text` with its top-left corner at (x, y), `scale` image pixels per font pixel, into
+// an 8-bit RGB image (rows from the top), clipped to its edges.
+void draw_bitmap_text(std::vector<unsigned char> &rgb, int width, int height, int x, int y,
+                      const std::string &text, int scale, const unsigned char colour[3]);
+int bitmap_text_width(const std::string &text, int scale);
+
 }  // namespace gs

@@ -1,0 +1,73 @@
+// The articles' figures, reproduced by our own renderers: Nguyen 1999 (Figures 1, 4-17), Segal
+// et al. 1992 (Figure 3) and Everitt et al. 2001 (Figures 2, 4, 5). Each figure is one small
+// function in a table; it renders its panels into one image and states, as checks evaluated on
+// the rendered pixels, what the article says the figure shows. Adding a figure is adding a
+// function (in figures_<source>.cpp, declared in figures_kit.h) and a row of figure_table().
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace gs {
+
+struct FigureImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // 8-bit RGB, rows from the top
+};
+
+// What the article says the figure shows, and what our pixels measured.
+struct FigureCheck {
+  std::string claim;
+  std::string measured;
+  bool passed = false;
+};
+
+struct Figure {
+  FigureImage image;
+  std::string shows;  // what our image shows, panel by panel
+  std::vector<FigureCheck> checks;
+};
+
+using FigureMaker = void (*)(Figure &);
+
+struct FigureEntry {
+  const char *name;     // "nguyen-7": how --only and the file names call it
+  const char *source;   // "Nguyen 1999, Figure 7"
+  const char *caption;  // the article's caption, in our words
+  FigureMaker make;
+};
+
+// Every figure, in the order the index shows them.
+const std::vector<FigureEntry> &figure_table();
+
+// `only` is a comma-separated list of names ("nguyen-7", "sgi-3") or bare numbers (Nguyen's
+// figure numbers); empty selects every figure. False with `error` naming an unknown entry.
+bool select_figures(const std::string &only, std::vector<const FigureEntry *> &selected,
+                    std::string &error);
+
+// The figures render into a Glide window of this size, opened by open_figure_window (after
+// grGlideInit) and closed by grGlideShutdown.
+constexpr int kFigureWindowWidth = 320;
+constexpr int kFigureWindowHeight = 256;
+bool open_figure_window(std::string &error);
+
+// Renders one figure into `figure` (the window must be open). A Glide error raised while it
+// renders becomes a failed check.
+void make_figure(const FigureEntry &entry, Figure &figure);
+
+bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error);
+
+// DIR/index.html: the figures side by side with the article's caption, what ours shows, and
+// each check with its result. `images` are the PNG file names, relative to DIR.
+bool write_figure_index(const std::string &path, const std::vector<const FigureEntry *> &entries,
+                        const std::vector<Figure> &figures, const std::vector<std::string> &images,
+                        std::string &error);
+
+// The `figures` command: renders the selection into `out_dir` (PNG per figure and index.html),
+// printing progress and every check to `out`. 0 when every check passed, 1 when one failed or
+// something could not be written, 2 for a bad selection.
+int run_figures(const std::string &out_dir, const std::string &only, std::FILE *out);
+
+}  // namespace gs
