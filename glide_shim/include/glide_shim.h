@@ -28,7 +28,8 @@ typedef enum {
   GLIDESHIM_ERR_INVALID_VALUE,   /* NaN, infinity or an absurd coordinate in a vertex */
   GLIDESHIM_ERR_INCONSISTENT,    /* arguments that contradict each other (LOD order, lock state) */
   GLIDESHIM_ERR_UNSUPPORTED,     /* valid Glide 2.x, but not implemented by this shim yet */
-  GLIDESHIM_ERR_BACKEND          /* the OpenGL backend failed (context, shader, file output) */
+  GLIDESHIM_ERR_BACKEND,         /* the OpenGL backend failed (context, shader, file output) */
+  GLIDESHIM_ERR_FILE             /* a file to read is missing, truncated or not in its format (.3df) */
 } GlideShimError;
 
 /* The last error reported since the previous clear, and its message ("" when none). */

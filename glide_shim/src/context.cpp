@@ -44,7 +44,13 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   tmu.lod_bias = 0.0f;
   tmu.combine = {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, GR_COMBINE_FUNCTION_ZERO,
                  GR_COMBINE_FACTOR_NONE, false, false};
-  tmu.source = {false, 0, GR_LOD_1, GR_LOD_1, GR_ASPECT_1x1, GR_TEXFMT_RGB_565};
+  tmu.allow_lod_dither = false;
+  tmu.lod_dither = false;
+  tmu.multibase = false;
+  for (std::int64_t &base : tmu.base) base = 0;
+  tmu.source = {false, 0, GR_LOD_1, GR_LOD_1, GR_ASPECT_1x1, GR_TEXFMT_RGB_565,
+                GR_MIPMAPLEVELMASK_BOTH};
+  tmu.tables = TextureTables{};  // palette and NCC tables all zero, NCC table 0 selected
   tmu.memory.assign(kTmuMemoryBytes, 0);
 
   display.open = true;

@@ -95,6 +95,16 @@ struct TextureSource {  // what grTexSource points TMU0 at
   GrLOD_t small_lod, large_lod;
   GrAspectRatio_t aspect;
   GrTextureFormat_t format;
+  FxU32 even_odd;  // GR_MIPMAPLEVELMASK_*: which levels the chain holds
+};
+
+// The TMU's look-up tables (grTexDownloadTable): one 256-entry palette for P_8 and AP_88, and
+// two NCC tables for YIQ_422 and AYIQ_8422, kept as the 12 packed words the hardware receives.
+struct TextureTables {
+  FxU32 palette[256];  // 0x??RRGGBB; the top byte is ignored
+  FxU32 ncc[2][12];    // GuNccTable.packed_data: Y (4 words), I (4), Q (4)
+  GrNCCTable_t ncc_select;
+  FxU32 generation;  // bumped on every change, so decoded textures know they are out of date
 };
 
 struct TmuState {
@@ -103,8 +113,16 @@ struct TmuState {
   GrMipMapMode_t mipmap_mode;
   bool lod_blend;
   float lod_bias;
+  bool allow_lod_dither;  // grHints(GR_HINT_ALLOW_MIPMAP_DITHER), read by grTexMipMapMode
+  bool lod_dither;        // GR_MIPMAP_NEAREST_DITHER took effect (the hint was on)
+  bool multibase;         // grTexMultibase
+  // Virtual start of a full 256..1 chain for each multibase range (256, 128, 64, 32..1), as the
+  // texBaseAddr registers hold it: a level's bytes sit at base + its offset in such a chain.
+  // Without multibase every level uses base[0], which grTexSource sets.
+  std::int64_t base[4];
   TexCombineUnit combine;
   TextureSource source;
+  TextureTables tables;
   std::vector<std::uint8_t> memory;  // the TMU's texture RAM; downloads write raw bytes here
 };
 

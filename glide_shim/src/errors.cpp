@@ -31,6 +31,7 @@ const char *glideShimErrorName(GlideShimError error) {
     case GLIDESHIM_ERR_INCONSISTENT: return "GLIDESHIM_ERR_INCONSISTENT";
     case GLIDESHIM_ERR_UNSUPPORTED: return "GLIDESHIM_ERR_UNSUPPORTED";
     case GLIDESHIM_ERR_BACKEND: return "GLIDESHIM_ERR_BACKEND";
+    case GLIDESHIM_ERR_FILE: return "GLIDESHIM_ERR_FILE";
   }
   return "unknown";
 }

@@ -177,7 +177,9 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   program.alpha_ref = location("u_alpha_ref");
   program.texture = location("u_texture");
   program.tex_size = location("u_tex_size");
-  program.tex_scale = location("u_tex_scale");
+  program.tex_levels = location("u_tex_levels");
+  program.lod_range = location("u_lod_range");
+  program.lod_bias = location("u_lod_bias");
   program.screen_height = location("u_screen_height");
   program.color_select = location("u_color_select");
   program.color_other = location("u_color_other");
@@ -266,13 +268,19 @@ void GlRenderer::flush() {
   if (key.texture && context_.tmu.source.valid) {
     const BoundTexture bound = textures_.bind(gl, context_.tmu);
     gl.glUniform1i(program->texture, 0);
-    gl.glUniform2f(program->tex_size, bound.width, bound.height);
-    gl.glUniform1f(program->tex_scale, bound.scale);
+    gl.glUniform2f(program->tex_size, bound.atlas_width, bound.atlas_height);
+    gl.glUniform4fv(program->tex_levels, kLodCount, &bound.levels[0][0]);
+    gl.glUniform2f(program->lod_range, bound.lod_min, bound.lod_max);
+    gl.glUniform1f(program->lod_bias, context_.tmu.lod_bias);
   } else if (key.texture) {
     // No grTexSource yet: a texture of size 1 reading texel zero of an unbound unit (0,0,0,0).
     gl.glBindTexture(GL_TEXTURE_2D, 0);
+    BoundTexture none;
+    none.levels[GR_LOD_256][1] = none.levels[GR_LOD_256][2] = none.levels[GR_LOD_256][3] = 1.0f;
     gl.glUniform2f(program->tex_size, 1.0f, 1.0f);
-    gl.glUniform1f(program->tex_scale, 1.0f);
+    gl.glUniform4fv(program->tex_levels, kLodCount, &none.levels[0][0]);
+    gl.glUniform2f(program->lod_range, 0.0f, 0.0f);
+    gl.glUniform1f(program->lod_bias, 0.0f);
   }
 
   const GLsizei stride = sizeof(ShimVertex);

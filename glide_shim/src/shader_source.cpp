@@ -28,7 +28,8 @@ std::string one_minus(GrCombineFactor_t factor, const std::string &source) {
 }
 
 // The factor's source, 0..255. In the TMU (`fbi` false) local is the texel, other the absent
-// upstream TMU, and 4/5 mean DETAIL and LOD_FRACTION, both zero with a single LOD level.
+// upstream TMU, and 4/5 mean DETAIL (zero: grTexDetailControl is not implemented) and
+// LOD_FRACTION (the fraction of the pixel's LOD, 0..255; zero without mip-mapping).
 std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std::string &local,
                         const std::string &local_alpha, const std::string &other_alpha) {
   const std::string zero = rgb ? "vec3(0.0)" : "0.0";
@@ -38,8 +39,9 @@ std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std:
     case GR_COMBINE_FACTOR_OTHER_ALPHA: return one_minus(factor, widen(other_alpha));
     case GR_COMBINE_FACTOR_LOCAL_ALPHA: return one_minus(factor, widen(local_alpha));
     case GR_COMBINE_FACTOR_TEXTURE_ALPHA: return one_minus(factor, fbi ? widen("tex.a") : zero);
-    case GR_COMBINE_FACTOR_TEXTURE_RGB:
-      return one_minus(factor, fbi && rgb ? "tex.rgb" : zero);
+    case GR_COMBINE_FACTOR_TEXTURE_RGB:  // LOD_FRACTION in the TMU
+      if (!fbi) return one_minus(factor, widen("lod_frac"));
+      return one_minus(factor, rgb ? "tex.rgb" : zero);
     default: return one_minus(factor, zero);
   }
 }
@@ -96,6 +98,81 @@ const char *glsl_compare(GrCmpFnc_t function) {
   }
 }
 
+// The 4x4 dither matrix entry of this pixel (row from the top of the frame buffer), as `name`.
+std::string dither_entry_code(const std::string &name) {
+  return "  vec2 " + name + "_cell = mod(vec2(floor(gl_FragCoord.x), u_screen_height - 1.0 -"
+         " floor(gl_FragCoord.y)), 4.0);\n"
+         "  vec4 " + name + "_row = " + name + "_cell.y < 1.0 ? vec4(0.0, 8.0, 2.0, 10.0) : " +
+         name + "_cell.y < 2.0 ? vec4(12.0, 4.0, 14.0, 6.0) : " + name +
+         "_cell.y < 3.0 ? vec4(3.0, 11.0, 1.0, 9.0) : vec4(15.0, 7.0, 13.0, 5.0);\n"
+         "  float " + name + " = " + name + "_cell.x < 1.0 ? " + name + "_row.x : " + name +
+         "_cell.x < 2.0 ? " + name + "_row.y : " + name + "_cell.x < 3.0 ? " + name +
+         "_row.z : " + name + "_row.w;\n";
+}
+
+// One filter at the chosen level: point (the texel under s,t) or Voodoo 1 bilinear.
+std::string filter_code(bool bilinear, const char *address_s, const char *address_t) {
+  std::ostringstream s;
+  if (bilinear) {
+    s << "    vec2 uvb = uv - 0.5;\n"
+         "    vec2 base = floor(uvb);\n"
+         "    vec2 f = floor((uvb - base) * 16.0);  // Voodoo 1: 4-bit sub-texel fraction\n"
+      << "    float i0 = " << address_s << "(base.x, level.y), i1 = " << address_s
+      << "(base.x + 1.0, level.y);\n"
+      << "    float j0 = " << address_t << "(base.y, level.z), j1 = " << address_t
+      << "(base.y + 1.0, level.z);\n"
+      << "    // Sum of the four integer products, recovered exactly by one rounding (the float\n"
+         "    // error of k/255 * 255 summed over the taps stays far below 0.5), then >> 8.\n"
+         "    vec4 sum = (fetch(i0, j0, level) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0,"
+         " level) * f.x * (16.0 - f.y) + fetch(i0, j1, level) * (16.0 - f.x) * f.y +"
+         " fetch(i1, j1, level) * f.x * f.y) * 255.0;\n"
+         "    return floor(floor(sum + 0.5) / 256.0);\n";
+  } else {
+    s << "    return floor(fetch(" << address_s << "(floor(uv.x), level.y), " << address_t
+      << "(floor(uv.y), level.z), level) * 255.0 + 0.5);\n";
+  }
+  return s.str();
+}
+
+// The TMU's fetch: the LOD (per pixel when mip-mapping, else lodmin), the level it selects, and
+// the filter. The LOD follows the hardware: log2 of the larger screen-space gradient of the
+// iterated (s/w, t/w) (constant over a triangle), minus log2 of the iterated 1/w, in 8.8 fixed
+// point, plus the bias, plus the 4x4 dither / 16 when enabled, clamped to [lodmin, lodmax];
+// its integer part picks the level (the next one if the evenOdd mask left it out) and its
+// fraction is the TMU's LOD_FRACTION factor.
+std::string tmu_sample_code(const PipelineKey &key) {
+  const char *address_s = key.wrap_s ? "wrap_index" : "clamp_index";
+  const char *address_t = key.wrap_t ? "wrap_index" : "clamp_index";
+  std::ostringstream s;
+  s << "vec4 sample_tmu(out float lod_frac) {\n"
+       "  // Glide s,t span 0..256 along the longer side; a divisor <= 0 gives s = t = 0.\n"
+       "  vec2 st = v_stq.z > 0.0 ? v_stq.xy / v_stq.z : vec2(0.0);\n";
+  if (key.mipmap) {
+    s << "  vec2 gx = dFdx(v_stq.xy), gy = dFdy(v_stq.xy);  // 256-texel units per pixel\n"
+         "  float lod = 0.5 * log2(max(max(dot(gx, gx), dot(gy, gy)), 1e-30)) -"
+         " log2(max(abs(v_stq.z), 1e-30));\n"
+         "  lod = floor(lod * 256.0) / 256.0 + u_lod_bias;\n";
+    if (key.lod_dither) s << dither_entry_code("lod_d") << "  lod += lod_d / 16.0;\n";
+    s << "  lod = clamp(lod, u_lod_range.x, u_lod_range.y);\n";
+  } else {
+    s << "  float lod = u_lod_range.x;\n";
+  }
+  s << "  float ilod = floor(lod);\n"
+       "  if (u_tex_levels[int(ilod)].w < 0.5) ilod = min(ilod + 1.0, 8.0);\n"
+       "  vec4 level = u_tex_levels[int(ilod)];\n"
+       "  lod_frac = floor((lod - floor(lod)) * 256.0);\n"
+       "  vec2 uv = st / exp2(ilod);  // texel units of the level\n";
+  if (key.mag_bilinear == key.min_bilinear) {
+    s << "  {\n" << filter_code(key.mag_bilinear, address_s, address_t) << "  }\n";
+  } else {
+    s << "  if (lod <= u_lod_range.x) {  // magnification\n"
+      << filter_code(key.mag_bilinear, address_s, address_t) << "  } else {\n"
+      << filter_code(key.min_bilinear, address_s, address_t) << "  }\n";
+  }
+  s << "}\n";
+  return s.str();
+}
+
 const char *kFragmentPrelude = R"(
 uniform vec4 u_constant;    // constant colour, RGBA 0..255
 uniform vec4 u_chroma;      // chroma-key colour, RGB 0..255 (a unused)
@@ -104,16 +181,19 @@ uniform vec4 u_color_select, u_color_other;  // local is constant, invert; other
 uniform vec4 u_alpha_select, u_alpha_other;
 uniform vec2 u_tmu_invert;                    // rgb, alpha
 uniform sampler2D u_texture;
-uniform vec2 u_tex_size;    // largest level in texels
-uniform float u_tex_scale;  // texels per Glide s,t unit: the longer side / 256
+uniform vec2 u_tex_size;    // the atlas holding every level, in texels
+uniform vec4 u_tex_levels[9];  // per GR_LOD: atlas row of the level's top, width, height, held
+uniform vec2 u_lod_range;   // lodmin, lodmax as GR_LOD values (256 = 0 .. 1 = 8)
+uniform float u_lod_bias;   // grTexLodBiasValue in quarters, as the tLOD register holds it
 uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
 
 // A texel as GL returns it, k/255 for the TMU's widened 8-bit value k (the upload already
-// holds the bit-replicated values); i, j are texel indices, already clamped or wrapped.
-vec4 fetch(float i, float j) {
-  return texture2D(u_texture, (vec2(i, j) + 0.5) / u_tex_size);
+// holds the bit-replicated values); i, j are texel indices in `level`, already clamped or
+// wrapped, and the level's rows start at level.x in the atlas.
+vec4 fetch(float i, float j, vec4 level) {
+  return texture2D(u_texture, (vec2(i, j + level.x) + 0.5) / u_tex_size);
 }
 float clamp_index(float i, float size) { return clamp(i, 0.0, size - 1.0); }
 float wrap_index(float i, float size) { return mod(i, size); }
@@ -149,8 +229,14 @@ PipelineKey pipeline_key(const GlideContext &context) {
     const TexCombineUnit &tmu = context.tmu.combine;
     key.tmu_rgb = shape(tmu.rgb_function, tmu.rgb_factor);
     key.tmu_alpha = shape(tmu.alpha_function, tmu.alpha_factor);
-    // With a single LOD the magnification filter decides (MAME's and 86Box's TMU: with one LOD level the magnification bit picks the filter).
-    key.bilinear = context.tmu.mag_filter == GR_TEXTUREFILTER_BILINEAR;
+    // MAME's and 86Box's TMU: the magnification filter when the clamped LOD equals lodmin,
+    // else the minification filter.
+    const TmuState &unit = context.tmu;
+    key.mag_bilinear = unit.mag_filter == GR_TEXTUREFILTER_BILINEAR;
+    key.mipmap = unit.mipmap_mode != GR_MIPMAP_DISABLE && unit.source.valid &&
+                 unit.source.small_lod != unit.source.large_lod;
+    key.min_bilinear = key.mipmap ? unit.min_filter == GR_TEXTUREFILTER_BILINEAR : key.mag_bilinear;
+    key.lod_dither = key.mipmap && unit.lod_dither;
     key.wrap_s = context.tmu.clamp_s == GR_TEXTURECLAMP_WRAP;
     key.wrap_t = context.tmu.clamp_t == GR_TEXTURECLAMP_WRAP;
   }
@@ -166,7 +252,8 @@ std::string PipelineKey::defines() const {
   for (const UnitShape *unit : {&color, &alpha, &tmu_rgb, &tmu_alpha}) {
     s << "unit " << unit->function << '/' << unit->factor << ' ';
   }
-  s << "texture " << texture << " bilinear " << bilinear << " wrap " << wrap_s << wrap_t
+  s << "texture " << texture << " filter " << mag_bilinear << min_bilinear << " mipmap " << mipmap
+    << lod_dither << " wrap " << wrap_s << wrap_t
     << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither;
   return s.str();
@@ -196,38 +283,13 @@ std::string fragment_shader_source(const PipelineKey &key) {
   std::ostringstream s;
   s << "#version 120\n// " << key.defines() << '\n' << kFragmentPrelude;
 
-  if (key.texture) {
-    const char *address_s = key.wrap_s ? "wrap_index" : "clamp_index";
-    const char *address_t = key.wrap_t ? "wrap_index" : "clamp_index";
-    s << "vec4 sample_tmu() {\n"
-         "  // Glide s,t span 0..256 along the longer side; a divisor <= 0 gives s = t = 0.\n"
-         "  vec2 st = v_stq.z > 0.0 ? v_stq.xy / v_stq.z : vec2(0.0);\n"
-         "  vec2 uv = st * u_tex_scale;  // texel units\n";
-    if (key.bilinear) {
-      s << "  uv -= 0.5;\n"
-           "  vec2 base = floor(uv);\n"
-           "  vec2 f = floor((uv - base) * 16.0);  // Voodoo 1: 4-bit sub-texel fraction\n"
-        << "  float i0 = " << address_s << "(base.x, u_tex_size.x), i1 = " << address_s
-        << "(base.x + 1.0, u_tex_size.x);\n"
-        << "  float j0 = " << address_t << "(base.y, u_tex_size.y), j1 = " << address_t
-        << "(base.y + 1.0, u_tex_size.y);\n"
-        << "  // Sum of the four integer products, recovered exactly by one rounding (the float\n"
-           "  // error of k/255 * 255 summed over the taps stays far below 0.5), then >> 8.\n"
-           "  vec4 sum = (fetch(i0, j0) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0) * f.x *"
-           " (16.0 - f.y) + fetch(i0, j1) * (16.0 - f.x) * f.y + fetch(i1, j1) * f.x * f.y) *"
-           " 255.0;\n"
-           "  return floor(floor(sum + 0.5) / 256.0);\n";
-    } else {
-      s << "  return floor(fetch(" << address_s << "(floor(uv.x), u_tex_size.x), " << address_t
-        << "(floor(uv.y), u_tex_size.y)) * 255.0 + 0.5);\n";
-    }
-    s << "}\n";
-  }
+  if (key.texture) s << tmu_sample_code(key);
 
   s << "void main() {\n"
        "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
   if (key.texture) {
-    s << "  vec4 texel = sample_tmu();\n"
+    s << "  float lod_frac;\n"
+         "  vec4 texel = sample_tmu(lod_frac);\n"
       << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
                       "0.0", "u_tmu_invert.x")
       << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",

@@ -22,7 +22,10 @@ struct UnitShape {
 struct PipelineKey {
   UnitShape color, alpha, tmu_rgb, tmu_alpha;
   bool texture = false;  // the colour path reads the TMU
-  bool bilinear = false;
+  // Filters: with one reachable LOD (no mip-mapping) only the magnification filter is used.
+  bool mag_bilinear = false, min_bilinear = false;
+  bool mipmap = false;      // LOD computed per pixel (grTexMipMapMode on, more than one level)
+  bool lod_dither = false;  // GR_MIPMAP_NEAREST_DITHER with the hint that allows it
   bool wrap_s = false, wrap_t = false;
   bool chroma_key = false;
   GrCmpFnc_t alpha_test = GR_CMP_ALWAYS;
@@ -52,7 +55,7 @@ struct ShaderProgram {
   int color_select = -1, color_other = -1, alpha_select = -1, alpha_other = -1,
       tmu_invert = -1;
   int screen = -1, y_down = -1, constant = -1, chroma = -1, alpha_ref = -1, texture = -1,
-      tex_size = -1, tex_scale = -1, screen_height = -1;
+      tex_size = -1, tex_levels = -1, lod_range = -1, lod_bias = -1, screen_height = -1;
 };
 
 }  // namespace glide_shim

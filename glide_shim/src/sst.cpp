@@ -187,8 +187,13 @@ void grSstOrigin(GrOriginLocation_t origin) {
 void grHints(GrHint_t type, FxU32 hintMask) {
   auto &ctx = current();
   if (!ctx.require_open("grHints")) return;
+  if (type == GR_HINT_ALLOW_MIPMAP_DITHER) {
+    // Read by the next grTexMipMapMode, as the driver does: it alone sets the LOD dither bit.
+    ctx.tmu.allow_lod_dither = hintMask != 0;
+    return;
+  }
   if (type != GR_HINT_STWHINT) {
-    // FIFO and ALLOWMIPMAPDITHER hints tune the hardware; they change no pixel here.
+    // FIFO hints tune the hardware; they change no pixel here.
     if (type > GR_HINTTYPE_MAX) {
       ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grHints: unknown hint type " + std::to_string(type));
     }

@@ -1,5 +1,6 @@
 // Chapter "texture mapping": which texture TMU0 reads and how (clamp or wrap, point or
-// bilinear), and the memory queries programs use to place textures in TMU memory.
+// bilinear, mip-mapping, LOD bias, multibase addresses, which NCC table), and the memory queries
+// programs use to place textures in TMU memory.
 #include "context.h"
 #include "texture_layout.h"
 
@@ -26,13 +27,14 @@ bool check_texture_info(const char *function, GrLOD_t small_lod, GrLOD_t large_l
                std::string(function) + ": " + problem);
     return false;
   }
-  if (!is_decodable_format(format)) {
-    ctx.report(GLIDESHIM_ERR_UNSUPPORTED, std::string(function) + ": texture format " +
-                                              std::to_string(format) +
-                                              " (palette/NCC) is not implemented yet");
-    return false;
-  }
   return true;
+}
+
+float fixed_lod_bias(float bias) {
+  // _grTexFloatLODToFixedLOD: quarters, (bias + 1/8) / (1/4) truncated towards zero, kept as a
+  // 6-bit two's complement field (so -0.5 becomes -0.25, as on the hardware).
+  const int quarters = static_cast<int>((bias + 0.125f) / 0.25f) & 0x3F;
+  return static_cast<float>(quarters >= 32 ? quarters - 64 : quarters) / 4.0f;
 }
 
 bool check_tmu(const char *function, GrChipID_t tmu) {
@@ -109,8 +111,11 @@ void grTexSource(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTexInfo *i
     return;
   }
   ctx.flush();
-  ctx.tmu.source = {true, startAddress, info->smallLod, info->largeLod, info->aspectRatio,
-                    info->format};
+  ctx.tmu.source = {true,          startAddress,      info->smallLod, info->largeLod,
+                    info->aspectRatio, info->format, evenOdd};
+  // Like the driver, grTexSource writes texBaseAddr, the base of the 256 range.
+  ctx.tmu.base[GR_TEXBASE_256] = glide_shim::chain_base(startAddress, info->largeLod,
+                                                        info->aspectRatio, info->format, evenOdd);
 }
 
 void grTexClampMode(GrChipID_t tmu, GrTextureClampMode_t s_clampmode,
@@ -152,10 +157,11 @@ void grTexMipMapMode(GrChipID_t tmu, GrMipMapMode_t mode, FxBool lodBlend) {
     ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grTexMipMapMode: unknown mode " + std::to_string(mode));
     return;
   }
-  // Stored; sampling reads the largest level until mip-mapping lands (docs/compatibility.md).
   ctx.flush();
   ctx.tmu.mipmap_mode = mode;
   ctx.tmu.lod_blend = lodBlend != FXFALSE;
+  // The driver sets the LOD dither bit only if GR_HINT_ALLOW_MIPMAP_DITHER was given before.
+  ctx.tmu.lod_dither = mode == GR_MIPMAP_NEAREST_DITHER && ctx.tmu.allow_lod_dither;
 }
 
 void grTexLodBiasValue(GrChipID_t tmu, float bias) {
@@ -167,7 +173,68 @@ void grTexLodBiasValue(GrChipID_t tmu, float bias) {
     return;
   }
   ctx.flush();
-  ctx.tmu.lod_bias = bias;
+  ctx.tmu.lod_bias = glide_shim::fixed_lod_bias(bias);
+}
+
+void grTexNCCTable(GrChipID_t tmu, GrNCCTable_t table) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexNCCTable") || !check_tmu("grTexNCCTable", tmu)) return;
+  if (table != GR_NCCTABLE_NCC0 && table != GR_NCCTABLE_NCC1) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "grTexNCCTable: table " + std::to_string(table) + " is not NCC0 or NCC1");
+    return;
+  }
+  if (table == ctx.tmu.tables.ncc_select) return;
+  ctx.flush();
+  ctx.tmu.tables.ncc_select = table;
+  ++ctx.tmu.tables.generation;
+}
+
+void grTexMultibase(GrChipID_t tmu, FxBool enable) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexMultibase") || !check_tmu("grTexMultibase", tmu)) return;
+  ctx.flush();
+  ctx.tmu.multibase = enable != FXFALSE;
+}
+
+void grTexMultibaseAddress(GrChipID_t tmu, GrTexBaseRange_t range, FxU32 startAddress,
+                           FxU32 evenOdd, GrTexInfo *info) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexMultibaseAddress") || !check_tmu("grTexMultibaseAddress", tmu))
+    return;
+  if (range > GR_TEXBASE_32_TO_1) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "grTexMultibaseAddress: unknown range " + std::to_string(range));
+    return;
+  }
+  if (info == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grTexMultibaseAddress: info is NULL");
+    return;
+  }
+  if (!glide_shim::is_even_odd(evenOdd)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grTexMultibaseAddress: unknown evenOdd mask");
+    return;
+  }
+  if (!check_texture_info("grTexMultibaseAddress", info->smallLod, info->largeLod,
+                          info->aspectRatio, info->format)) {
+    return;
+  }
+  // The range's own levels, from its top LOD (256, 128, 64 or 32) down to its bottom (32..1
+  // holds six), start at startAddress as grTexDownloadMipMapLevel placed them.
+  const GrLOD_t top = static_cast<GrLOD_t>(range);
+  const GrLOD_t bottom = range == GR_TEXBASE_32_TO_1 ? GR_LOD_1 : top;
+  const FxU32 bytes = glide_shim::mipmap_bytes(bottom, top, info->aspectRatio, info->format,
+                                               evenOdd);
+  if (startAddress % 8 != 0 || startAddress > glide_shim::kTmuMemoryBytes ||
+      bytes > glide_shim::kTmuMemoryBytes - startAddress) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               "grTexMultibaseAddress: levels at " + std::to_string(startAddress) + " (" +
+                   std::to_string(bytes) + " bytes) are misaligned or beyond TMU memory");
+    return;
+  }
+  ctx.flush();
+  ctx.tmu.base[range] =
+      glide_shim::chain_base(startAddress, top, info->aspectRatio, info->format, evenOdd);
 }
 
 }  // extern "C"

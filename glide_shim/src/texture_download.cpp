@@ -1,6 +1,7 @@
-// Chapter "texture download": copying texel data into TMU memory, byte for byte. The format in
-// GrTexInfo only sizes the copy; how the bytes are read is decided later by grTexSource, which is
-// what lets the article download 565 frame-buffer words as an ARGB_4444 texture.
+// Chapter "texture download": copying texel data into TMU memory, byte for byte, and the
+// palette and NCC tables into the TMU's look-up registers. The format in GrTexInfo only sizes
+// the copy; how the bytes are read is decided later by grTexSource, which is what lets the
+// article download 565 frame-buffer words as an ARGB_4444 texture.
 #include "context.h"
 #include "gl_renderer.h"
 #include "texture_layout.h"
@@ -77,39 +78,116 @@ void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTe
   }
 }
 
-void grTexDownloadMipMapLevel(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
-                              GrLOD_t largeLod, GrAspectRatio_t aspectRatio,
-                              GrTextureFormat_t format, FxU32 evenOdd, void *data) {
+}  // extern "C"
+
+namespace {
+
+// Rows start..end of one level; `name` is the entry point the program called, for errors.
+void download_rows(const char *name, GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
+                   GrLOD_t largeLod, GrAspectRatio_t aspectRatio, GrTextureFormat_t format,
+                   FxU32 evenOdd, const void *data, int start, bool whole_level_end, int end) {
   auto &ctx = current();
-  if (!ctx.require_open("grTexDownloadMipMapLevel") ||
-      !glide_shim::check_tmu("grTexDownloadMipMapLevel", tmu))
-    return;
+  if (!ctx.require_open(name) || !glide_shim::check_tmu(name, tmu)) return;
   if (data == nullptr) {
-    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grTexDownloadMipMapLevel: data is NULL");
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, std::string(name) + ": data is NULL");
     return;
   }
   if (!glide_shim::is_even_odd(evenOdd)) {
-    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grTexDownloadMipMapLevel: unknown evenOdd mask");
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, std::string(name) + ": unknown evenOdd mask");
     return;
   }
-  if (!glide_shim::check_texture_info("grTexDownloadMipMapLevel", thisLod, largeLod, aspectRatio,
-                                      format)) {
-    return;
-  }
+  if (!glide_shim::check_texture_info(name, thisLod, largeLod, aspectRatio, format)) return;
   if (startAddress % 8 != 0) {
-    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grTexDownloadMipMapLevel: start address " +
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(name) + ": start address " +
                                                std::to_string(startAddress) +
                                                " is not 8-byte aligned");
     return;
   }
-  const FxU32 offset =
-      glide_shim::level_offset(thisLod, largeLod, aspectRatio, format, evenOdd);
   const glide_shim::LevelSize size = glide_shim::level_size(thisLod, aspectRatio);
-  const auto bytes =
-      static_cast<FxU32>(size.width * size.height * glide_shim::bytes_per_texel(format));
-  // A whole chain is at most ~175 KB, so offset + bytes cannot overflow.
-  if (!fits_in_memory("grTexDownloadMipMapLevel", startAddress, offset + bytes)) return;
-  write_memory(startAddress + offset, data, bytes);
+  if (whole_level_end) end = size.height - 1;
+  if (start < 0 || end < start || end >= size.height) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               std::string(name) + ": rows " + std::to_string(start) + ".." +
+                   std::to_string(end) + " are not inside the level's 0.." +
+                   std::to_string(size.height - 1));
+    return;
+  }
+  const FxU32 offset = glide_shim::level_offset(thisLod, largeLod, aspectRatio, format, evenOdd);
+  const auto row_bytes =
+      static_cast<FxU32>(size.width * glide_shim::bytes_per_texel(format));
+  const FxU32 level_bytes = row_bytes * static_cast<FxU32>(size.height);
+  // A whole chain is at most ~175 KB, so offset + level_bytes cannot overflow.
+  if (!fits_in_memory(name, startAddress, offset + level_bytes)) return;
+  // The driver skips a level the evenOdd mask leaves out (it lives on the other TMU).
+  if (!glide_shim::level_selected(thisLod, evenOdd)) return;
+  const FxU32 first_row = static_cast<FxU32>(start);
+  write_memory(startAddress + offset + first_row * row_bytes, data,
+               row_bytes * static_cast<FxU32>(end - start + 1));
+}
+
+void download_table(const char *name, GrChipID_t tmu, GrTexTable_t type, const void *data,
+                    int start, bool whole_table_end, int end) {
+  auto &ctx = current();
+  if (!ctx.require_open(name) || !glide_shim::check_tmu(name, tmu)) return;
+  if (type != GR_TEXTABLE_NCC0 && type != GR_TEXTABLE_NCC1 && type != GR_TEXTABLE_PALETTE) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               std::string(name) + ": unknown table type " + std::to_string(type));
+    return;
+  }
+  if (data == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, std::string(name) + ": data is NULL");
+    return;
+  }
+  // A palette has 256 entries; an NCC table is 12 packed words (GuNccTable.packed_data).
+  const int entries = type == GR_TEXTABLE_PALETTE ? 256 : 12;
+  if (whole_table_end) end = entries - 1;
+  if (start < 0 || end < start || end >= entries) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               std::string(name) + ": entries " + std::to_string(start) + ".." +
+                   std::to_string(end) + " are outside the table's 0.." +
+                   std::to_string(entries - 1));
+    return;
+  }
+  ctx.flush();  // draws already queued decode with the old table
+  glide_shim::TextureTables &tables = ctx.tmu.tables;
+  const auto first = static_cast<std::size_t>(start);
+  const auto count = static_cast<std::size_t>(end - start + 1);
+  if (type == GR_TEXTABLE_PALETTE) {
+    const auto *palette = static_cast<const GuTexPalette *>(data);
+    std::memcpy(tables.palette + first, palette->data + first, count * sizeof(FxU32));
+  } else {
+    const auto *ncc = static_cast<const GuNccTable *>(data);
+    std::memcpy(tables.ncc[type] + first, ncc->packed_data + first, count * sizeof(FxU32));
+  }
+  ++tables.generation;
+}
+
+}  // namespace
+
+extern "C" {
+
+void grTexDownloadMipMapLevelPartial(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
+                                     GrLOD_t largeLod, GrAspectRatio_t aspectRatio,
+                                     GrTextureFormat_t format, FxU32 evenOdd, void *data,
+                                     int start, int end) {
+  download_rows("grTexDownloadMipMapLevelPartial", tmu, startAddress, thisLod, largeLod,
+                aspectRatio, format, evenOdd, data, start, false, end);
+}
+
+void grTexDownloadMipMapLevel(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
+                              GrLOD_t largeLod, GrAspectRatio_t aspectRatio,
+                              GrTextureFormat_t format, FxU32 evenOdd, void *data) {
+  download_rows("grTexDownloadMipMapLevel", tmu, startAddress, thisLod, largeLod, aspectRatio,
+                format, evenOdd, data, 0, true, 0);
+}
+
+void grTexDownloadTablePartial(GrChipID_t tmu, GrTexTable_t type, void *data, int start,
+                               int end) {
+  download_table("grTexDownloadTablePartial", tmu, type, data, start, false, end);
+}
+
+void grTexDownloadTable(GrChipID_t tmu, GrTexTable_t type, void *data) {
+  download_table("grTexDownloadTable", tmu, type, data, 0, true, 0);
 }
 
 }  // extern "C"

@@ -16,21 +16,6 @@ bool is_texture_format(GrTextureFormat_t format) {
          format != GR_TEXFMT_RSVD1;
 }
 
-bool is_decodable_format(GrTextureFormat_t format) {
-  switch (format) {
-    case GR_TEXFMT_RGB_332:
-    case GR_TEXFMT_ALPHA_8:
-    case GR_TEXFMT_INTENSITY_8:
-    case GR_TEXFMT_ALPHA_INTENSITY_44:
-    case GR_TEXFMT_ARGB_8332:
-    case GR_TEXFMT_RGB_565:
-    case GR_TEXFMT_ARGB_1555:
-    case GR_TEXFMT_ARGB_4444:
-    case GR_TEXFMT_ALPHA_INTENSITY_88: return true;
-    default: return false;  // palette and NCC formats need their tables (not yet implemented)
-  }
-}
-
 bool is_even_odd(FxU32 even_odd) {
   return even_odd == GR_MIPMAPLEVELMASK_EVEN || even_odd == GR_MIPMAPLEVELMASK_ODD ||
          even_odd == GR_MIPMAPLEVELMASK_BOTH;
@@ -85,6 +70,21 @@ FxU32 mipmap_bytes(GrLOD_t small_lod, GrLOD_t large_lod, GrAspectRatio_t aspect,
                    GrTextureFormat_t format, FxU32 even_odd) {
   const FxU32 bytes = level_offset(small_lod + 1, large_lod, aspect, format, even_odd);
   return (bytes + 7u) & ~7u;
+}
+
+std::int64_t chain_base(FxU32 start, GrLOD_t large_lod, GrAspectRatio_t aspect,
+                        GrTextureFormat_t format, FxU32 even_odd) {
+  return static_cast<std::int64_t>(start) -
+         static_cast<std::int64_t>(level_offset(large_lod, GR_LOD_256, aspect, format, even_odd));
+}
+
+int multibase_range(GrLOD_t lod) { return lod < GR_TEXBASE_32_TO_1 ? lod : GR_TEXBASE_32_TO_1; }
+
+std::int64_t level_address(const std::int64_t base[4], bool multibase, GrLOD_t lod,
+                           GrAspectRatio_t aspect, GrTextureFormat_t format, FxU32 even_odd) {
+  const std::int64_t chain = base[multibase ? multibase_range(lod) : 0];
+  return chain +
+         static_cast<std::int64_t>(level_offset(lod, GR_LOD_256, aspect, format, even_odd));
 }
 
 }  // namespace glide_shim
