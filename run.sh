@@ -17,6 +17,7 @@ PACKAGES=(
   libglm-dev libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libembree-dev
+  libsdl2-dev xvfb xauth xdotool x11-apps
 )
 
 install_missing_packages() {
