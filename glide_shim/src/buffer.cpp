@@ -69,6 +69,12 @@ void grBufferSwap(int swap_interval) {
   }
 }
 
+int grBufferNumPending(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grBufferNumPending")) return 0;
+  return 0;  // a swap takes effect at once: none is ever waiting for the retrace
+}
+
 void grRenderBuffer(GrBuffer_t buffer) {
   auto &ctx = current();
   if (!ctx.require_open("grRenderBuffer")) return;

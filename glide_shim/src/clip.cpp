@@ -1,9 +1,11 @@
-// guDrawTriangleWithClip, as 3dfx's guclip.c does it: triangles inside the clip window go
-// straight to the rasteriser; the rest are clipped in screen space (right, bottom, left, top),
-// every attribute interpolated linearly, and drawn as a fan. There is no near-plane clipping:
-// the program must keep w > 0, as on the hardware.
+// guDrawTriangleWithClip and guDrawPolygonVertexListWithClip, as 3dfx's guclip.c does them:
+// polygons inside the clip window go straight to the rasteriser; the rest are clipped in screen
+// space (right, bottom, left, top), every attribute interpolated linearly, and drawn as a fan.
+// There is no near-plane clipping: the program must keep w > 0, as on the hardware.
 #include "draw.h"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace glide_shim {
@@ -15,9 +17,9 @@ constexpr float kMaxClippedCoordinate = 1.0e7f;
 
 ShimVertex lerp(const ShimVertex &a, const ShimVertex &b, float t) {
   auto mix = [t](float u, float v) { return u + (v - u) * t; };
-  return {mix(a.x, b.x),     mix(a.y, b.y),     mix(a.depth, b.depth), mix(a.r, b.r),
-          mix(a.g, b.g),     mix(a.b, b.b),     mix(a.a, b.a),         mix(a.sow, b.sow),
-          mix(a.tow, b.tow), mix(a.q, b.q)};
+  return {mix(a.x, b.x),     mix(a.y, b.y), mix(a.depth, b.depth), mix(a.r, b.r),
+          mix(a.g, b.g),     mix(a.b, b.b), mix(a.a, b.a),         mix(a.sow, b.sow),
+          mix(a.tow, b.tow), mix(a.q, b.q), mix(a.fog, b.fog)};
 }
 
 // Keeps the part of `polygon` where sign * (coordinate - bound) >= 0.
@@ -34,6 +36,28 @@ std::vector<ShimVertex> clip_edge(const std::vector<ShimVertex> &polygon, bool u
     if ((dp >= 0.0f) != (dq >= 0.0f)) out.push_back(lerp(p, q, dp / (dp - dq)));
   }
   return out;
+}
+
+// Clips a convex polygon (screen pixels) to the clip window unless it lies inside, then
+// draws it as a fan from its first vertex.
+void clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVertex> polygon) {
+  const auto &clip = ctx.raster.clip;
+  const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
+  const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
+  bool inside = true;
+  for (const ShimVertex &v : polygon) {
+    inside = inside && v.x >= min_x && v.x < max_x && v.y >= min_y && v.y < max_y;
+  }
+  if (!inside) {
+    polygon = clip_edge(polygon, true, max_x, -1.0f);
+    polygon = clip_edge(polygon, false, max_y, -1.0f);
+    polygon = clip_edge(polygon, true, min_x, 1.0f);
+    polygon = clip_edge(polygon, false, min_y, 1.0f);
+    for (ShimVertex &v : polygon) v.x = snap(v.x), v.y = snap(v.y);
+  }
+  for (std::size_t i = 2; i < polygon.size(); ++i) {
+    queue_triangle(ctx, polygon[0], polygon[i - 1], polygon[i]);
+  }
 }
 
 }  // namespace
@@ -60,23 +84,32 @@ void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex
       return;
     }
   }
-  const auto &clip = ctx.raster.clip;
-  const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
-  const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
-  bool inside = true;
-  for (const ShimVertex &v : polygon) {
-    inside = inside && v.x >= min_x && v.x < max_x && v.y >= min_y && v.y < max_y;
+  glide_shim::clip_and_draw_fan(ctx, std::move(polygon));
+}
+
+void guDrawPolygonVertexListWithClip(int nverts, const GrVertex vlist[]) {
+  auto &ctx = current();
+  if (!ctx.require_open("guDrawPolygonVertexListWithClip")) return;
+  if (vlist == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "guDrawPolygonVertexListWithClip: vlist is NULL");
+    return;
   }
-  if (!inside) {
-    polygon = glide_shim::clip_edge(polygon, true, max_x, -1.0f);
-    polygon = glide_shim::clip_edge(polygon, false, max_y, -1.0f);
-    polygon = glide_shim::clip_edge(polygon, true, min_x, 1.0f);
-    polygon = glide_shim::clip_edge(polygon, false, min_y, 1.0f);
-    for (ShimVertex &v : polygon) v.x = glide_shim::snap(v.x), v.y = glide_shim::snap(v.y);
+  if (nverts < 3) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "guDrawPolygonVertexListWithClip: " +
+                                               std::to_string(nverts) +
+                                               " vertices; a polygon needs at least 3");
+    return;
   }
-  for (std::size_t i = 2; i < polygon.size(); ++i) {
-    glide_shim::queue_triangle(ctx, polygon[0], polygon[i - 1], polygon[i]);
+  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
+  std::vector<ShimVertex> polygon(static_cast<std::size_t>(nverts));
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    if (!glide_shim::to_shim_vertex(ctx, fields, vlist[i], polygon[i],
+                                    "guDrawPolygonVertexListWithClip",
+                                    glide_shim::kMaxClippedCoordinate)) {
+      return;
+    }
   }
+  glide_shim::clip_and_draw_fan(ctx, std::move(polygon));
 }
 
 }  // extern "C"

@@ -61,6 +61,8 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   display.swaps = 0;
 
   lfb = LfbLockState{};
+  fog = FogState{GR_FOG_DISABLE, 0, {}};
+  perf = PerfStatsState{};
   texture_target = TextureTarget{};
   plain_gl = false;
 }

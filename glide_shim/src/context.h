@@ -141,6 +141,20 @@ struct LfbLockState {
   GrOriginLocation_t write_origin;
   std::vector<FxU16> read_pixels, write_pixels;  // whole-screen 565 copies handed to the app
   std::vector<FxU16> write_original;             // write_pixels as locked, to find what changed
+  GrAlpha_t constant_alpha = 0xFF;  // grLfbConstantAlpha: alpha of LFB writes that carry none
+  FxU16 constant_depth = 0;         // grLfbConstantDepth: depth code of writes that carry none
+};
+
+struct FogState {  // grFogMode, grFogColorValue, grFogTable
+  GrFogMode_t mode;     // GR_FOG_* source in the low byte, MULT2 / ADD2 flags above it
+  GrColor_t color;      // in the window's colour format
+  GrFog_t table[GR_FOG_TABLE_SIZE];  // fog blend per W-code octave quarter, 0..255
+};
+
+// grSstPerfStats: the FBI's pixel counters, counted once grSstResetPerfStats starts them.
+struct PerfStatsState {
+  bool counting;
+  GrSstPerfStats_t counts;
 };
 
 struct ErrorState {
@@ -166,6 +180,8 @@ class GlideContext {
   TmuState tmu{};
   DisplayState display{};
   LfbLockState lfb{};
+  FogState fog{};
+  PerfStatsState perf{};
   TextureTarget texture_target{};
   bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
   ErrorState errors{};

@@ -1,4 +1,5 @@
-// Chapter "drawing primitives": points, lines and triangles, and the cull mode.
+// Chapter "drawing primitives": points, lines, triangles and polygons (fans), their antialiased
+// forms (alpha fringes along the edges, as gaa.c draws them), and the cull mode.
 #include "draw.h"
 
 #include "depth.h"
@@ -6,6 +7,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace glide_shim {
 namespace {
@@ -29,8 +32,10 @@ VertexFields fields_read(const GlideContext &context) {
   fields.rgb = color.local == GR_COMBINE_LOCAL_ITERATED || color.other == GR_COMBINE_OTHER_ITERATED;
   fields.alpha = alpha.local == GR_COMBINE_LOCAL_ITERATED || alpha.other == GR_COMBINE_OTHER_ITERATED;
   fields.texture = reads_texture(context.color_path);
-  fields.ooz = context.depth.mode == GR_DEPTHBUFFER_ZBUFFER;
-  fields.oow = is_w_buffer(context.depth.mode) || fields.texture;
+  fields.fog = context.fog.mode & 0xFF;
+  fields.alpha = fields.alpha || fields.fog == GR_FOG_WITH_ITERATED_ALPHA;
+  fields.ooz = context.depth.mode == GR_DEPTHBUFFER_ZBUFFER || fields.fog == GR_FOG_WITH_ITERATED_Z;
+  fields.oow = is_w_buffer(context.depth.mode) || fields.texture || fields.fog == GR_FOG_WITH_TABLE;
   return fields;
 }
 
@@ -63,6 +68,8 @@ bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrV
   if (fields.rgb) out.r = in.r, out.g = in.g, out.b = in.b;
   if (fields.alpha) out.a = in.a;
   out.depth = vertex_depth(context.depth, fields.ooz ? in.ooz : 0.0f, fields.oow ? in.oow : 0.0f);
+  if (fields.fog == GR_FOG_WITH_TABLE) out.fog = in.oow;
+  if (fields.fog == GR_FOG_WITH_ITERATED_Z) out.fog = in.ooz;
   if (fields.texture) {
     out.sow = in.tmuvtx[0].sow;
     out.tow = in.tmuvtx[0].tow;
@@ -82,6 +89,91 @@ void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex
   context.renderer->queue(Primitive::Triangles, triangle, 3);
 }
 
+namespace {
+
+// The program's polygon (through `ilist` when given) as shim vertices; false after reporting.
+bool convert_polygon(GlideContext &context, const char *function, int nverts, const int *ilist,
+                     bool indexed, const GrVertex *vlist, std::vector<ShimVertex> &out) {
+  if (vlist == nullptr || (indexed && ilist == nullptr)) {
+    context.report(GLIDESHIM_ERR_NULL_POINTER,
+                   std::string(function) + (vlist == nullptr ? ": vlist is NULL" : ": ilist is NULL"));
+    return false;
+  }
+  if (nverts < 3) {
+    context.report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(function) + ": " +
+                                                   std::to_string(nverts) +
+                                                   " vertices; a polygon needs at least 3");
+    return false;
+  }
+  const VertexFields fields = fields_read(context);
+  std::vector<ShimVertex> polygon(static_cast<std::size_t>(nverts));
+  for (int i = 0; i < nverts; ++i) {
+    const int index = indexed ? ilist[i] : i;
+    if (index < 0) {
+      context.report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(function) + ": ilist[" +
+                                                     std::to_string(i) + "] is negative");
+      return false;
+    }
+    if (!to_shim_vertex(context, fields, vlist[index], polygon[static_cast<std::size_t>(i)], function)) {
+      return false;
+    }
+  }
+  out = std::move(polygon);
+  return true;
+}
+
+// A fan from the first vertex, as gdraw.c draws polygons; planar polygons come out the same,
+// since their attributes are planar by contract.
+void queue_fan(GlideContext &context, const std::vector<ShimVertex> &polygon) {
+  for (std::size_t i = 2; i < polygon.size(); ++i) {
+    queue_triangle(context, polygon[0], polygon[i - 1], polygon[i]);
+  }
+}
+
+// Twice the signed area of a polygon in screen pixels (the sign is its winding).
+float signed_area(const std::vector<ShimVertex> &polygon) {
+  float area = 0.0f;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const ShimVertex &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    area += p.x * q.y - q.x * p.y;
+  }
+  return area;
+}
+
+// The hardware's antialiasing (gaa.c): a one-pixel fringe outside edge p->q, stepped along the
+// edge's minor axis, whose outer vertices have alpha 0, so blending with the iterated alpha
+// fades the edge. Wound like the polygon, so culling treats it the same.
+void queue_fringe(GlideContext &context, const ShimVertex &p, const ShimVertex &q, float winding) {
+  const float dx = q.x - p.x, dy = q.y - p.y;
+  const float out_x = winding * dy, out_y = -winding * dx;  // outward normal (screen pixels)
+  ShimVertex p_out = p, q_out = q;
+  if (std::fabs(dx) >= std::fabs(dy)) {
+    const float step = out_y > 0.0f ? 1.0f : -1.0f;
+    p_out.y += step, q_out.y += step;
+  } else {
+    const float step = out_x > 0.0f ? 1.0f : -1.0f;
+    p_out.x += step, q_out.x += step;
+  }
+  p_out.a = q_out.a = 0.0f;
+  queue_triangle(context, q, p, p_out);
+  queue_triangle(context, q, p_out, q_out);
+}
+
+void draw_polygon(const char *function, int nverts, const int *ilist, bool indexed,
+                  const GrVertex *vlist, bool antialiased) {
+  auto &ctx = current();
+  if (!ctx.require_open(function)) return;
+  std::vector<ShimVertex> polygon;
+  if (!convert_polygon(ctx, function, nverts, ilist, indexed, vlist, polygon)) return;
+  queue_fan(ctx, polygon);
+  const float area = signed_area(polygon);
+  if (!antialiased || area == 0.0f) return;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    queue_fringe(ctx, polygon[i], polygon[(i + 1) % polygon.size()], area > 0.0f ? 1.0f : -1.0f);
+  }
+}
+
+}  // namespace
 }  // namespace glide_shim
 
 using glide_shim::current;
@@ -144,6 +236,80 @@ void grDrawPoint(const GrVertex *pt) {
   v.x = std::floor(v.x) + 0.5f;
   v.y = std::floor(v.y) + 0.5f;
   ctx.renderer->queue(glide_shim::Primitive::Points, &v, 1);
+}
+
+void grDrawPolygon(int nverts, const int ilist[], const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grDrawPolygon", nverts, ilist, true, vlist, false);
+}
+
+void grDrawPlanarPolygon(int nverts, const int ilist[], const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grDrawPlanarPolygon", nverts, ilist, true, vlist, false);
+}
+
+void grDrawPolygonVertexList(int nverts, const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grDrawPolygonVertexList", nverts, nullptr, false, vlist, false);
+}
+
+void grDrawPlanarPolygonVertexList(int nverts, const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grDrawPlanarPolygonVertexList", nverts, nullptr, false, vlist, false);
+}
+
+void grAADrawPolygon(const int nverts, const int ilist[], const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grAADrawPolygon", nverts, ilist, true, vlist, true);
+}
+
+void grAADrawPolygonVertexList(const int nverts, const GrVertex vlist[]) {
+  glide_shim::draw_polygon("grAADrawPolygonVertexList", nverts, nullptr, false, vlist, true);
+}
+
+void grAADrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c, FxBool ab_antialias,
+                      FxBool bc_antialias, FxBool ca_antialias) {
+  auto &ctx = current();
+  if (!ctx.require_open("grAADrawTriangle")) return;
+  if (a == nullptr || b == nullptr || c == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grAADrawTriangle: a vertex pointer is NULL");
+    return;
+  }
+  const GrVertex list[3] = {*a, *b, *c};
+  std::vector<glide_shim::ShimVertex> v;
+  if (!glide_shim::convert_polygon(ctx, "grAADrawTriangle", 3, nullptr, false, list, v)) return;
+  glide_shim::queue_triangle(ctx, v[0], v[1], v[2]);
+  const float area = glide_shim::signed_area(v);
+  if (area == 0.0f) return;
+  const float winding = area > 0.0f ? 1.0f : -1.0f;
+  if (ab_antialias) glide_shim::queue_fringe(ctx, v[0], v[1], winding);
+  if (bc_antialias) glide_shim::queue_fringe(ctx, v[1], v[2], winding);
+  if (ca_antialias) glide_shim::queue_fringe(ctx, v[2], v[0], winding);
+}
+
+void grAADrawLine(const GrVertex *v1, const GrVertex *v2) {
+  auto &ctx = current();
+  if (!ctx.require_open("grAADrawLine")) return;
+  if (v1 == nullptr || v2 == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grAADrawLine: a vertex pointer is NULL");
+    return;
+  }
+  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
+  glide_shim::ShimVertex v[2];
+  if (!glide_shim::to_shim_vertex(ctx, fields, *v1, v[0], "grAADrawLine") ||
+      !glide_shim::to_shim_vertex(ctx, fields, *v2, v[1], "grAADrawLine")) {
+    return;
+  }
+  // The line's core at full alpha, then a one-pixel fringe on either side along the minor axis
+  // fading to alpha 0 (gaa.c's two-sided ramp).
+  ctx.renderer->queue(glide_shim::Primitive::Lines, v, 2);
+  glide_shim::queue_fringe(ctx, v[0], v[1], 1.0f);
+  glide_shim::queue_fringe(ctx, v[0], v[1], -1.0f);
+}
+
+void grAADrawPoint(const GrVertex *pt) {
+  auto &ctx = current();
+  if (!ctx.require_open("grAADrawPoint")) return;
+  if (pt == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grAADrawPoint: pt is NULL");
+    return;
+  }
+  grDrawPoint(pt);  // drawn without a fringe: one pixel, like grDrawPoint
 }
 
 }  // extern "C"

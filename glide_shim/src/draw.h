@@ -9,6 +9,7 @@ namespace glide_shim {
 
 struct VertexFields {  // which GrVertex fields the current state reads
   bool rgb, alpha, ooz, oow, texture;
+  GrFogMode_t fog;  // the fog source: table fog reads oow, iterated-Z fog ooz, iterated alpha a
 };
 
 VertexFields fields_read(const GlideContext &context);

@@ -26,7 +26,7 @@ namespace glide_shim {
   X(glGetShaderInfoLog) X(glCreateProgram) X(glAttachShader) X(glBindAttribLocation) \
   X(glLinkProgram) X(glGetProgramiv) X(glGetProgramInfoLog) X(glUseProgram) X(glDeleteShader) \
   X(glDeleteProgram) X(glGetUniformLocation) X(glUniform1i) X(glUniform1f) X(glUniform2f) \
-  X(glUniform4f) X(glUniform4fv) X(glVertexAttribPointer) X(glEnableVertexAttribArray) X(glDisableVertexAttribArray) \
+  X(glUniform2fv) X(glUniform3f) X(glUniform4f) X(glUniform4fv) X(glVertexAttribPointer) X(glEnableVertexAttribArray) X(glDisableVertexAttribArray) \
   X(glDrawArrays) X(glPushAttrib) X(glPopAttrib) \
   X(glPushClientAttrib) X(glPopClientAttrib) X(glMatrixMode) X(glPushMatrix) X(glPopMatrix) \
   X(glLoadIdentity) X(glOrtho) X(glTexEnvi) X(glEnableClientState) \

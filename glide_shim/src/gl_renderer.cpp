@@ -11,7 +11,7 @@
 namespace glide_shim {
 namespace {
 
-enum Attribute : unsigned { kPosition = 0, kDepth = 1, kColor = 2, kStq = 3 };
+enum Attribute : unsigned { kPosition = 0, kDepth = 1, kColor = 2, kStq = 3, kFog = 4 };
 
 GLenum gl_compare(GrCmpFnc_t function, bool inverted) {
   // In W-buffer mode GL stores 1/w, which falls as the Voodoo's depth code rises, so every
@@ -155,6 +155,7 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   gl.glBindAttribLocation(program.program, kDepth, "a_depth");
   gl.glBindAttribLocation(program.program, kColor, "a_color");
   gl.glBindAttribLocation(program.program, kStq, "a_stq");
+  gl.glBindAttribLocation(program.program, kFog, "a_fog");
   gl.glLinkProgram(program.program);
   gl.glDeleteShader(vs);
   gl.glDeleteShader(fs);
@@ -186,6 +187,10 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   program.alpha_select = location("u_alpha_select");
   program.alpha_other = location("u_alpha_other");
   program.tmu_invert = location("u_tmu_invert");
+  program.fog_color = location("u_fog_color");
+  program.fog_flags = location("u_fog_flags");
+  program.fog_table = location("u_fog_table");
+  program.fog_bias = location("u_fog_bias");
   return &programs_.emplace(name, program).first->second;
 }
 
@@ -228,6 +233,26 @@ void GlRenderer::apply_fixed_function_state() {
   }
 }
 
+void GlRenderer::set_fog_uniforms(const ShaderProgram &program) {
+  const GlFunctions &gl = backend_->gl;
+  const FogState &fog = context_.fog;
+  const Rgba8 color = unpack_color(fog.color, context_.display.color_format);
+  gl.glUniform3f(program.fog_color, color.r, color.g, color.b);
+  gl.glUniform2f(program.fog_flags, (fog.mode & GR_FOG_MULT2) != 0 ? 1.0f : 0.0f,
+                 (fog.mode & GR_FOG_ADD2) != 0 ? 1.0f : 0.0f);
+  // Each entry with the delta grFogTable loads: (next - this) << 2 kept to 8 bits (the last
+  // entry's next is itself), as the hardware's table RAM holds it.
+  float table[2 * GR_FOG_TABLE_SIZE];
+  for (int i = 0; i < GR_FOG_TABLE_SIZE; ++i) {
+    const int next = fog.table[i < GR_FOG_TABLE_SIZE - 1 ? i + 1 : i];
+    table[2 * i] = fog.table[i];
+    table[2 * i + 1] = static_cast<float>(((next - fog.table[i]) * 4) & 0xFF);
+  }
+  gl.glUniform2fv(program.fog_table, GR_FOG_TABLE_SIZE, table);
+  const bool biased = context_.depth.mode != GR_DEPTHBUFFER_DISABLE;
+  gl.glUniform1f(program.fog_bias, biased ? static_cast<float>(context_.depth.bias_level) : 0.0f);
+}
+
 void GlRenderer::queue(Primitive primitive, const ShimVertex *vertices, int count) {
   if (primitive != primitive_) {
     flush();
@@ -236,16 +261,9 @@ void GlRenderer::queue(Primitive primitive, const ShimVertex *vertices, int coun
   queue_.insert(queue_.end(), vertices, vertices + count);
 }
 
-void GlRenderer::flush() {
-  if (queue_.empty()) return;
+// Binds `program` and sets every uniform it reads from the context's state.
+void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &key) {
   const GlFunctions &gl = backend_->gl;
-  const PipelineKey key = pipeline_key(context_);
-  const ShaderProgram *program = program_for(key);
-  if (program == nullptr) {
-    queue_.clear();
-    return;
-  }
-  apply_fixed_function_state();
   gl.glUseProgram(program->program);
   gl.glUniform2f(program->screen, static_cast<float>(target_.width),
                  static_cast<float>(target_.height));
@@ -283,6 +301,21 @@ void GlRenderer::flush() {
     gl.glUniform1f(program->lod_bias, 0.0f);
   }
 
+  if (key.fog != GR_FOG_DISABLE) set_fog_uniforms(*program);
+}
+
+void GlRenderer::flush() {
+  if (queue_.empty()) return;
+  const GlFunctions &gl = backend_->gl;
+  const PipelineKey key = pipeline_key(context_);
+  const ShaderProgram *program = program_for(key);
+  if (program == nullptr) {
+    queue_.clear();
+    return;
+  }
+  apply_fixed_function_state();
+  use_program(program, key);
+
   const GLsizei stride = sizeof(ShimVertex);
   const char *base = reinterpret_cast<const char *>(queue_.data());
   gl.glVertexAttribPointer(kPosition, 2, GL_FLOAT, GL_FALSE, stride,
@@ -292,21 +325,79 @@ void GlRenderer::flush() {
   gl.glVertexAttribPointer(kColor, 4, GL_FLOAT, GL_FALSE, stride, base + offsetof(ShimVertex, r));
   gl.glVertexAttribPointer(kStq, 3, GL_FLOAT, GL_FALSE, stride,
                            base + offsetof(ShimVertex, sow));
-  for (unsigned attribute : {kPosition, kDepth, kColor, kStq}) {
+  gl.glVertexAttribPointer(kFog, 1, GL_FLOAT, GL_FALSE, stride, base + offsetof(ShimVertex, fog));
+  for (unsigned attribute : {kPosition, kDepth, kColor, kStq, kFog}) {
     gl.glEnableVertexAttribArray(attribute);
   }
   const GLenum mode = primitive_ == Primitive::Triangles ? GL_TRIANGLES
                       : primitive_ == Primitive::Lines   ? GL_LINES
                                                          : GL_POINTS;
-  if (counting_) gl.glBeginQuery(GL_SAMPLES_PASSED, query_);
-  gl.glDrawArrays(mode, 0, static_cast<GLsizei>(queue_.size()));
-  if (counting_) {
-    gl.glEndQuery(GL_SAMPLES_PASSED);
-    GLuint passed = 0;
-    gl.glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &passed);
-    pixels_counted_ += passed;
+  if (context_.perf.counting) {
+    draw_counting_stages(program, key, mode);
+  } else {
+    if (counting_) gl.glBeginQuery(GL_SAMPLES_PASSED, query_);
+    gl.glDrawArrays(mode, 0, static_cast<GLsizei>(queue_.size()));
+    if (counting_) {
+      gl.glEndQuery(GL_SAMPLES_PASSED);
+      GLuint passed = 0;
+      gl.glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &passed);
+      pixels_counted_ += passed;
+    }
   }
   queue_.clear();
+}
+
+std::uint32_t GlRenderer::samples_drawn(unsigned mode, int first, int count) {
+  const GlFunctions &gl = backend_->gl;
+  gl.glBeginQuery(GL_SAMPLES_PASSED, query_);
+  gl.glDrawArrays(mode, first, count);
+  gl.glEndQuery(GL_SAMPLES_PASSED);
+  GLuint passed = 0;
+  gl.glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &passed);
+  return passed;
+}
+
+void GlRenderer::draw_counting_stages(const ShaderProgram *program, const PipelineKey &key,
+                                      unsigned mode) {
+  // grSstPerfStats, exactly: each primitive is drawn up to three times with colour and depth
+  // writes off, counting the pixels that pass no test, the depth test, and depth plus chroma key
+  // (the Voodoo's order), then for real with the alpha test too. One primitive at a time, so a
+  // primitive's depth test sees the writes of the ones before it, as on the hardware.
+  const GlFunctions &gl = backend_->gl;
+  PipelineKey untested = key;
+  untested.chroma_key = false;
+  untested.alpha_test = GR_CMP_ALWAYS;
+  PipelineKey chroma_only = key;
+  chroma_only.alpha_test = GR_CMP_ALWAYS;
+  const ShaderProgram *untested_program = program_for(untested);
+  const ShaderProgram *chroma_program = key.chroma_key ? program_for(chroma_only) : nullptr;
+  if (untested_program == nullptr || (key.chroma_key && chroma_program == nullptr)) return;
+  const bool depth_test = context_.depth.mode != GR_DEPTHBUFFER_DISABLE;
+  const int per_primitive = primitive_ == Primitive::Triangles ? 3 : primitive_ == Primitive::Lines ? 2 : 1;
+  GrSstPerfStats_t &counts = context_.perf.counts;
+  for (int first = 0; first + per_primitive <= static_cast<int>(queue_.size()); first += per_primitive) {
+    gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl.glDepthMask(GL_FALSE);
+    use_program(untested_program, untested);
+    gl.glDisable(GL_DEPTH_TEST);
+    const std::uint32_t in = samples_drawn(mode, first, per_primitive);
+    if (depth_test) gl.glEnable(GL_DEPTH_TEST);
+    const std::uint32_t depth_passed = depth_test ? samples_drawn(mode, first, per_primitive) : in;
+    std::uint32_t chroma_passed = depth_passed;
+    if (chroma_program != nullptr) {
+      use_program(chroma_program, chroma_only);
+      chroma_passed = samples_drawn(mode, first, per_primitive);
+    }
+    apply_fixed_function_state();
+    use_program(program, key);
+    const std::uint32_t out = samples_drawn(mode, first, per_primitive);
+    counts.pixelsIn += in;
+    counts.zFuncFail += in - depth_passed;
+    counts.chromaFail += depth_passed - chroma_passed;
+    counts.aFuncFail += chroma_passed - out;
+    counts.pixelsOut += out;
+    if (counting_) pixels_counted_ += out;
+  }
 }
 
 void GlRenderer::begin_plain_gl() {
@@ -327,7 +418,7 @@ void GlRenderer::begin_plain_gl() {
   gl.glBindTexture(GL_TEXTURE_2D, 0);
   // The shim's generic attribute arrays point into its vertex queue; attribute 0 would override
   // the caller's glVertexPointer. flush() enables them again before the next Glide draw.
-  for (unsigned attribute : {kPosition, kDepth, kColor, kStq}) {
+  for (unsigned attribute : {kPosition, kDepth, kColor, kStq, kFog}) {
     gl.glDisableVertexAttribArray(attribute);
   }
   for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_SCISSOR_TEST}) {
@@ -421,6 +512,27 @@ void GlRenderer::write_color(int index, int x, int y, int w, int h, const std::u
   gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   gl.glWindowPos2i(x, height_ - (y + h));
   gl.glDrawPixels(w, h, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, block.data());
+}
+
+void GlRenderer::write_depth(int x, int y, int w, int h, const float *src) {
+  flush();
+  const GlFunctions &gl = backend_->gl;
+  std::vector<float> block(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  for (int row = 0; row < h; ++row) {  // rows from the top in, GL rows from the bottom out
+    const float *line = src + static_cast<std::size_t>(row) * w;
+    std::copy(line, line + w, block.data() + static_cast<std::size_t>(h - 1 - row) * w);
+  }
+  // GL writes drawn depth only through the depth test, so the test passes always.
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl.glUseProgram(0);
+  gl.glDisable(GL_SCISSOR_TEST);
+  gl.glDisable(GL_BLEND);
+  gl.glEnable(GL_DEPTH_TEST);
+  gl.glDepthFunc(GL_ALWAYS);
+  gl.glDepthMask(GL_TRUE);
+  gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  gl.glWindowPos2i(x, height_ - (y + h));
+  gl.glDrawPixels(w, h, GL_DEPTH_COMPONENT, GL_FLOAT, block.data());
 }
 
 void GlRenderer::begin_texture_target(int side) {

@@ -24,6 +24,7 @@ struct ShimVertex {
   float depth;          // GL window depth [0,1]: 1/w for the W-buffer, ooz/65535 for the Z-buffer
   float r, g, b, a;     // iterated colour, 0..255
   float sow, tow, q;    // texture numerators and divisor (oow or tmuvtx[0].oow), screen-linear
+  float fog;            // fog iterator: oow for table fog, ooz for iterated-Z fog, else 0
 };
 
 enum class Primitive { Triangles, Lines, Points };
@@ -52,6 +53,8 @@ class GlRenderer {
   void write_color(int index, int x, int y, int w, int h, const std::uint16_t *src,
                    std::size_t stride);
   void read_depth(int x, int y, int w, int h, float *dst);  // GL window depth [0,1]
+  // Writes GL window depths (rows from the top) into the depth buffer, bypassing every test.
+  void write_depth(int x, int y, int w, int h, const float *src);
 
   TextureCache &textures() { return textures_; }
 
@@ -73,6 +76,11 @@ class GlRenderer {
   bool build_framebuffer(std::string &error);
   const ShaderProgram *program_for(const PipelineKey &key);
   void apply_fixed_function_state();
+  void set_fog_uniforms(const ShaderProgram &program);
+  void use_program(const ShaderProgram *program, const PipelineKey &key);
+  // Pixels of queue_[first, first + count) that pass every enabled test (an occlusion query).
+  std::uint32_t samples_drawn(unsigned mode, int first, int count);
+  void draw_counting_stages(const ShaderProgram *program, const PipelineKey &key, unsigned mode);
 
   struct Target {
     unsigned framebuffer = 0;

@@ -211,13 +211,8 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
                         FxU32 src_width, FxU32 src_height, FxI32 src_stride, void *src_data) {
   auto &ctx = current();
   if (!ctx.require_open("grLfbWriteRegion")) return FXFALSE;
-  if (dst_buffer != GR_BUFFER_FRONTBUFFER && dst_buffer != GR_BUFFER_BACKBUFFER) {
-    ctx.report(dst_buffer == GR_BUFFER_AUXBUFFER ? GLIDESHIM_ERR_UNSUPPORTED
-                                                 : GLIDESHIM_ERR_INVALID_ENUM,
-               "grLfbWriteRegion: only the colour buffers can be written yet");
-    return FXFALSE;
-  }
   int bytes_per_pixel = 0;
+  bool color = true, depth = false;  // what the source pixels carry
   switch (src_format) {
     case GR_LFB_SRC_FMT_565:
     case GR_LFB_SRC_FMT_555:
@@ -226,16 +221,24 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
     case GR_LFB_SRC_FMT_8888: bytes_per_pixel = 4; break;
     case GR_LFB_SRC_FMT_565_DEPTH:
     case GR_LFB_SRC_FMT_555_DEPTH:
-    case GR_LFB_SRC_FMT_1555_DEPTH:
-    case GR_LFB_SRC_FMT_ZA16:
+    case GR_LFB_SRC_FMT_1555_DEPTH: bytes_per_pixel = 4, depth = true; break;
+    case GR_LFB_SRC_FMT_ZA16: bytes_per_pixel = 2, color = false, depth = true; break;
     case GR_LFB_SRC_FMT_RLE16:
-      ctx.report(GLIDESHIM_ERR_UNSUPPORTED, "grLfbWriteRegion: source format " +
-                                                std::to_string(src_format) + " is not implemented yet");
+      // The SST-1 driver (glfb.c) leaves RLE16 unimplemented and returns FXFALSE.
+      ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
+                 "grLfbWriteRegion: GR_LFB_SRC_FMT_RLE16 is not implemented (nor by the SST-1 driver)");
       return FXFALSE;
     default:
       ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grLfbWriteRegion: unknown source format " +
                                                  std::to_string(src_format));
       return FXFALSE;
+  }
+  // A ZA16 word carries depth only, which the aux buffer takes whichever buffer is named;
+  // colour formats need a colour buffer (the aux buffer holds depth, not colour).
+  if (!is_lfb_buffer(dst_buffer) || (color && dst_buffer == GR_BUFFER_AUXBUFFER)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "grLfbWriteRegion: colour formats write GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER");
+    return FXFALSE;
   }
   if (src_data == nullptr) {
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grLfbWriteRegion: src_data is NULL");
@@ -252,20 +255,49 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
                                                " is less than one row of pixels");
     return FXFALSE;
   }
-  std::vector<std::uint16_t> words(static_cast<std::size_t>(src_width) * src_height);
+  const std::size_t count = static_cast<std::size_t>(src_width) * src_height;
+  std::vector<std::uint16_t> words(count);
+  std::vector<float> depths(depth ? count : 0);
+  const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
+  // The 32-bit colour-and-depth formats hold the colour word low and the depth code high.
+  const GrLfbSrcFmt_t color_format = src_format == GR_LFB_SRC_FMT_565_DEPTH   ? GR_LFB_SRC_FMT_565
+                                     : src_format == GR_LFB_SRC_FMT_555_DEPTH ? GR_LFB_SRC_FMT_555
+                                     : src_format == GR_LFB_SRC_FMT_1555_DEPTH ? GR_LFB_SRC_FMT_1555
+                                                                                : src_format;
   const auto *in = static_cast<const std::uint8_t *>(src_data);
   for (FxU32 row = 0; row < src_height; ++row) {
     for (FxU32 col = 0; col < src_width; ++col) {
-      words[row * src_width + col] = to_565(
-          src_format, in + static_cast<std::size_t>(row) * static_cast<std::size_t>(src_stride) +
-                          static_cast<std::size_t>(col) * static_cast<std::size_t>(bytes_per_pixel));
+      const std::uint8_t *p = in + static_cast<std::size_t>(row) * static_cast<std::size_t>(src_stride) +
+                              static_cast<std::size_t>(col) * static_cast<std::size_t>(bytes_per_pixel);
+      const std::size_t i = static_cast<std::size_t>(row) * src_width + col;
+      if (color) words[i] = to_565(color_format, p);
+      if (depth) {
+        std::uint16_t code;
+        std::memcpy(&code, color ? p + 2 : p, 2);
+        depths[i] = static_cast<float>(glide_shim::gl_depth_from_code(code, w_buffer));
+      }
     }
   }
-  ctx.renderer->write_color(ctx.renderer->buffer_index(dst_buffer), static_cast<int>(dst_x),
-                            static_cast<int>(dst_y), static_cast<int>(src_width),
-                            static_cast<int>(src_height), words.data(),
-                            static_cast<std::size_t>(src_width) * 2);
+  const int x = static_cast<int>(dst_x), y = static_cast<int>(dst_y);
+  const int w = static_cast<int>(src_width), h = static_cast<int>(src_height);
+  if (color) {
+    ctx.renderer->write_color(ctx.renderer->buffer_index(dst_buffer), x, y, w, h, words.data(),
+                              static_cast<std::size_t>(src_width) * 2);
+  }
+  if (depth) ctx.renderer->write_depth(x, y, w, h, depths.data());
   return FXTRUE;
+}
+
+void grLfbConstantAlpha(GrAlpha_t alpha) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbConstantAlpha")) return;
+  ctx.lfb.constant_alpha = alpha;
+}
+
+void grLfbConstantDepth(FxU16 depth) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbConstantDepth")) return;
+  ctx.lfb.constant_depth = depth;
 }
 
 }  // extern "C"

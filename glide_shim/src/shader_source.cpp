@@ -98,6 +98,51 @@ const char *glsl_compare(GrCmpFnc_t function) {
   }
 }
 
+// The fog unit, after the alpha test (Voodoo order): the blend factor from the table, the
+// iterated alpha or the iterated Z, then (fog - colour) * (f + 1) >> 8 + colour with MULT2
+// dropping the "+ colour" and "- colour" terms and ADD2 replacing the fog colour by zero.
+std::string fog_code(GrFogMode_t source) {
+  if (source == GR_FOG_DISABLE) return "";
+  std::ostringstream s;
+  s << "  float fog_blend = ";
+  if (source == GR_FOG_WITH_TABLE) {
+    s << "fog_table_blend();\n";
+  } else if (source == GR_FOG_WITH_ITERATED_ALPHA) {
+    s << "it.a;\n";
+  } else {  // iterated Z: the top 8 bits of the clamped 16-bit z
+    s << "floor(clamp(floor(v_fog + 1.0 / 64.0), 0.0, 65535.0) / 256.0);\n";
+  }
+  s << "  vec3 fog = u_fog_flags.y > 0.5 ? vec3(0.0) : u_fog_color;\n"
+       "  if (u_fog_flags.x < 0.5) fog -= rgb;\n"
+       "  fog = floor(fog * (fog_blend + 1.0) / 256.0);  // arithmetic shift: floors negatives\n"
+       "  if (u_fog_flags.x < 0.5) fog += rgb;\n"
+       "  rgb = clamp(fog, 0.0, 255.0);\n";
+  return s.str();
+}
+
+// The W code of 1/w as the hardware forms it (depth.cpp's w_code): leading zeros of the 16
+// fraction bits, then the 12 bits after the leading one, inverted. Doubling is exact in float.
+const char *kFogTableFunctions = R"(
+float w_code(float oow) {
+  if (oow >= 1.0) return 0.0;
+  if (oow < 1.0 / 65536.0) return 65535.0;
+  float m = oow;
+  float zeros = 0.0;
+  for (int i = 0; i < 16; ++i) {
+    if (m < 0.5) { m *= 2.0; zeros += 1.0; }
+  }
+  float mantissa = floor(m * 8192.0) - 4096.0;
+  return min(zeros * 4096.0 + (4095.0 - mantissa) + 1.0, 65535.0);
+}
+// Entry code >> 10 plus its delta times the next 8 bits of the code, >> 10 (Voodoo 1: no fog
+// dither or zones; the delta is the 8-bit (next - this) << 2 that grFogTable loads).
+float fog_table_blend() {
+  float code = clamp(w_code(v_fog) + u_fog_bias, 0.0, 65535.0);
+  vec2 entry = u_fog_table[int(floor(code / 1024.0))];
+  return entry.x + floor(entry.y * mod(floor(code / 4.0), 256.0) / 1024.0);
+}
+)";
+
 // The 4x4 dither matrix entry of this pixel (row from the top of the frame buffer), as `name`.
 std::string dither_entry_code(const std::string &name) {
   return "  vec2 " + name + "_cell = mod(vec2(floor(gl_FragCoord.x), u_screen_height - 1.0 -"
@@ -188,6 +233,11 @@ uniform float u_lod_bias;   // grTexLodBiasValue in quarters, as the tLOD regist
 uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
+varying float v_fog;        // 1/w or ooz for fog, screen-linear like the hardware's iterators
+uniform vec3 u_fog_color;   // RGB 0..255
+uniform vec2 u_fog_flags;   // MULT2, ADD2 as 0/1
+uniform vec2 u_fog_table[64];  // per entry: fog blend, and the hardware's delta byte
+uniform float u_fog_bias;   // depth bias added to the W code (depth buffering on), code units
 
 // A texel as GL returns it, k/255 for the TMU's widened 8-bit value k (the upload already
 // holds the bit-replicated values); i, j are texel indices in `level`, already clamped or
@@ -244,6 +294,7 @@ PipelineKey pipeline_key(const GlideContext &context) {
   key.alpha_test = context.blend.alpha_test_function;
   key.blending = !(context.blend.rgb_src == GR_BLEND_ONE && context.blend.rgb_dst == GR_BLEND_ZERO);
   key.dither = context.raster.dither;
+  key.fog = context.fog.mode & 0xFF;
   return key;
 }
 
@@ -255,7 +306,7 @@ std::string PipelineKey::defines() const {
   s << "texture " << texture << " filter " << mag_bilinear << min_bilinear << " mipmap " << mipmap
     << lod_dither << " wrap " << wrap_s << wrap_t
     << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
-    << " dither " << dither;
+    << " dither " << dither << " fog " << fog;
   return s.str();
 }
 
@@ -265,16 +316,19 @@ attribute vec2 a_position;  // screen pixels in the Glide origin
 attribute float a_depth;    // GL window depth, 0..1
 attribute vec4 a_color;     // 0..255
 attribute vec3 a_stq;       // sow, tow, divisor
+attribute float a_fog;      // fog iterator: 1/w (table fog) or ooz (iterated-Z fog)
 uniform vec2 u_screen;      // width, height in pixels
 uniform float u_y_down;     // 1 when the origin is the upper-left corner
 varying vec4 v_color;
 varying vec3 v_stq;
+varying float v_fog;
 void main() {
   vec2 ndc = a_position * 2.0 / u_screen - 1.0;
   if (u_y_down > 0.5) ndc.y = -ndc.y;
   gl_Position = vec4(ndc, a_depth * 2.0 - 1.0, 1.0);
   v_color = a_color;
   v_stq = a_stq;
+  v_fog = a_fog;
 }
 )";
 }
@@ -284,6 +338,8 @@ std::string fragment_shader_source(const PipelineKey &key) {
   s << "#version 120\n// " << key.defines() << '\n' << kFragmentPrelude;
 
   if (key.texture) s << tmu_sample_code(key);
+
+  if (key.fog == GR_FOG_WITH_TABLE) s << kFogTableFunctions;
 
   s << "void main() {\n"
        "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
@@ -317,6 +373,8 @@ std::string fragment_shader_source(const PipelineKey &key) {
   } else if (const char *op = glsl_compare(key.alpha_test)) {
     s << "  if (!(alpha " << op << " u_alpha_ref)) discard;\n";
   }
+
+  s << fog_code(key.fog);
 
   if (key.blending) {
     // GL blends the 8-bit colour; its rounding may differ from the Voodoo's by one 565 step.

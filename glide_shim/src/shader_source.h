@@ -31,6 +31,7 @@ struct PipelineKey {
   GrCmpFnc_t alpha_test = GR_CMP_ALWAYS;
   bool blending = false;  // GL blends the unquantised colour; otherwise the shader writes 565
   GrDitherMode_t dither = GR_DITHER_DISABLE;
+  GrFogMode_t fog = GR_FOG_DISABLE;  // the fog source (low byte of grFogMode); flags are uniforms
 
   std::string defines() const;  // also the cache key
 };
@@ -56,6 +57,7 @@ struct ShaderProgram {
       tmu_invert = -1;
   int screen = -1, y_down = -1, constant = -1, chroma = -1, alpha_ref = -1, texture = -1,
       tex_size = -1, tex_levels = -1, lod_range = -1, lod_bias = -1, screen_height = -1;
+  int fog_color = -1, fog_flags = -1, fog_table = -1, fog_bias = -1;
 };
 
 }  // namespace glide_shim

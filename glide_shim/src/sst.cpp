@@ -1,5 +1,6 @@
 // Chapter "SST routines": library start-up and shutdown, the hardware query (one Voodoo 1 with
-// one TMU), opening and closing the window, origin and hints.
+// one TMU), opening and closing the window, origin and hints, the status and retrace queries,
+// and the splash and logo calls (no-ops).
 #include "context.h"
 #include "gl_renderer.h"
 
@@ -170,6 +171,58 @@ void grSstIdle(void) {
   if (!ctx.require_open("grSstIdle")) return;
   ctx.flush();
   ctx.renderer->gl().glFinish();
+}
+
+FxU32 grSstScreenWidth(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstScreenWidth")) return 0;
+  return static_cast<FxU32>(ctx.display.width);
+}
+
+FxU32 grSstScreenHeight(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstScreenHeight")) return 0;
+  return static_cast<FxU32>(ctx.display.height);
+}
+
+// Every draw has finished by the time a Glide call returns to the program (the GL work is
+// flushed on demand), so the board is never busy and there is no scan-out to wait for.
+FxBool grSstIsBusy(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstIsBusy")) return FXFALSE;
+  return FXFALSE;
+}
+
+FxBool grSstVRetraceOn(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstVRetraceOn")) return FXFALSE;
+  return FXTRUE;  // headless: always in the vertical blank, so retrace waits end at once
+}
+
+FxU32 grSstVideoLine(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstVideoLine")) return 0;
+  return 0;  // the beam is in the vertical blank, at line 0
+}
+
+FxU32 grSstStatus(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstStatus")) return 0;
+  // SST-1 status register: PCI FIFO free (bits 5:0, all 0x3F free), vertical retrace (bit 6),
+  // FBI/TMU/SST busy (bits 7-9, all idle), the displayed buffer (bits 11:10), memory FIFO free
+  // (bits 27:12, all free) and swaps pending (bits 30:28, none).
+  const FxU32 displayed = static_cast<FxU32>(ctx.renderer->buffer_index(GR_BUFFER_FRONTBUFFER));
+  return 0x3Fu | (1u << 6) | (displayed << 10) | (0xFFFFu << 12);
+}
+
+void grSplash(float x, float y, float width, float height, FxU32 frame) {
+  // The 3dfx start-up animation is not part of the shim: a harmless no-op, as when the splash
+  // is disabled (FX_GLIDE_NO_SPLASH).
+  (void)x, (void)y, (void)width, (void)height, (void)frame;
+}
+
+void grGlideShamelessPlug(const FxBool on) {
+  (void)on;  // the 3dfx logo overlay is not drawn
 }
 
 void grSstOrigin(GrOriginLocation_t origin) {
