@@ -96,24 +96,22 @@ bool select_figures(const std::string &only, std::vector<const FigureEntry *> &s
   return true;
 }
 
-bool open_figure_window(std::string &error) {
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error) {
+  figure = Figure{};
+  grSstWinClose();  // the previous figure's, if any
   if (!glideShimSetWindowSize(kFigureWindowWidth, kFigureWindowHeight) ||
       !grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
                     GR_ORIGIN_UPPER_LEFT, 2, 1)) {
     error = std::string("cannot open the figures' Glide window: ") + glideShimGetLastErrorMessage();
     return false;
   }
-  return true;
-}
-
-void make_figure(const FigureEntry &entry, Figure &figure) {
-  figure = Figure{};
   glideShimClearError();
   entry.make(figure);
-  const GlideShimError error = glideShimGetLastError();
+  const GlideShimError reported = glideShimGetLastError();
   figure.checks.push_back(figures::check(
-      "Glide reported no error while the figure rendered", error == GLIDESHIM_OK,
-      error == GLIDESHIM_OK ? "no error" : glideShimGetLastErrorMessage()));
+      "Glide reported no error while the figure rendered", reported == GLIDESHIM_OK,
+      reported == GLIDESHIM_OK ? "no error" : glideShimGetLastErrorMessage()));
+  return true;
 }
 
 bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error) {
@@ -209,11 +207,6 @@ int run_figures(const std::string &out_dir, const std::string &only, std::FILE *
     return 1;
   }
   grGlideInit();
-  if (!open_figure_window(error)) {
-    std::fprintf(stderr, "glideshadows figures: %s\n", error.c_str());
-    grGlideShutdown();
-    return 1;
-  }
   std::vector<Figure> figures(entries.size());
   std::vector<std::string> images;
   int failed_checks = 0;
@@ -222,7 +215,11 @@ int run_figures(const std::string &out_dir, const std::string &only, std::FILE *
     const FigureEntry &entry = *entries[i];
     std::fprintf(out, "[%zu/%zu] %s (%s)\n", i + 1, entries.size(), entry.source, entry.name);
     std::fflush(out);
-    make_figure(entry, figures[i]);
+    if (!make_figure(entry, figures[i], error)) {
+      std::fprintf(stderr, "glideshadows figures: %s\n", error.c_str());
+      grGlideShutdown();
+      return 1;
+    }
     images.push_back(std::string(entry.name) + ".png");
     if (!write_figure_png(figures[i].image, (fs::path(out_dir) / images.back()).string(), error)) {
       std::fprintf(stderr, "glideshadows figures: %s\n", error.c_str());

@@ -47,15 +47,15 @@ const std::vector<FigureEntry> &figure_table();
 bool select_figures(const std::string &only, std::vector<const FigureEntry *> &selected,
                     std::string &error);
 
-// The figures render into a Glide window of this size, opened by open_figure_window (after
-// grGlideInit) and closed by grGlideShutdown.
+// Each figure renders into a Glide window of this size, opened afresh for it (so no state
+// carries over from the figure before: the same figure gives the same bytes alone or in a run).
 constexpr int kFigureWindowWidth = 320;
 constexpr int kFigureWindowHeight = 256;
-bool open_figure_window(std::string &error);
 
-// Renders one figure into `figure` (the window must be open). A Glide error raised while it
-// renders becomes a failed check.
-void make_figure(const FigureEntry &entry, Figure &figure);
+// Renders one figure into `figure`, in a new window (after grGlideInit; grGlideShutdown closes
+// the last one). False, with `error`, when the window cannot be opened. A Glide error raised
+// while it renders becomes a failed check.
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error);
 
 bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error);
 

@@ -7,6 +7,7 @@
 
 #include "ground_truth.h"
 #include "metrics.h"
+#include "projection.h"
 #include "scene_pass.h"
 
 #include <glideutl.h>
@@ -62,10 +63,9 @@ Scene from_the_light(const Scene &scene) {
   return figures::seen_from(scene, light.position, light.target, light.cone_degrees, kLightView);
 }
 
-// The light-view depth w (metres along the light's axis) a W-buffer code stands for: the code
-// is 1/w as a float with 4 exponent and 12 mantissa bits, the mantissa inverted (the Voodoo's
-// W-buffer format, as the shim stores it).
-double w_from_code(FxU16 code) {
+// The clip w a W-buffer code stands for: the code is 1/w as a float with 4 exponent and 12
+// mantissa bits, the mantissa inverted (the Voodoo's W-buffer format, as the shim stores it).
+double clip_w_from_code(FxU16 code) {
   if (code == 0) return 1.0;
   const unsigned exponent = (code - 1u) >> 12;
   const unsigned mantissa = ~(code - 1u) & 0xFFF;
@@ -113,7 +113,12 @@ Words depth_map(const Scene &scene, const DepthScale &scale) {
   const Scene light = from_the_light(scene);
   render_scene(light, project_scene(light));
   Words map = figures::read_back(kLightView, kLightView, GR_BUFFER_AUXBUFFER);
-  for (FxU16 &code : map.data) code = code == 0xFFFF ? 0xFFFF : grey565(scale.level(w_from_code(code)));
+  // Clip w in the camera's units: w = -z_eye times the projection's w row (-m[2][3]).
+  const double metres_per_w =
+      -1.0 / static_cast<double>(camera_projection(light.camera, light.width, light.height)[2][3]);
+  for (FxU16 &code : map.data) {
+    code = code == 0xFFFF ? 0xFFFF : grey565(scale.level(clip_w_from_code(code) * metres_per_w));
+  }
   return map;
 }
 

@@ -214,8 +214,8 @@ Scene article_scene() {
   light.target = glm::vec3(0.0f, 0.9f, 0.0f);
   light.cone_degrees = 75.0f;
   scene.lights.push_back(light);
-  scene.camera.position = glm::vec3(0.8f, 2.6f, 4.6f);
-  scene.camera.target = glm::vec3(0.4f, 0.7f, -0.4f);
+  scene.camera.position = glm::vec3(1.0f, 2.3f, 3.6f);
+  scene.camera.target = glm::vec3(0.5f, 0.6f, -0.5f);
   scene.camera.fov_degrees = 45.0f;
   return scene;
 }
