@@ -192,7 +192,9 @@ BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
   gl.glActiveTexture(GL_TEXTURE0);
   gl.glBindTexture(GL_TEXTURE_2D, entry->name);
 
-  if (uses_tables(source.format) && entry->table_generation != tmu.tables.generation) {
+  // A restored state (grGlideSetState) can change the NCC choice without a table download.
+  if (uses_tables(source.format) && (entry->table_generation != tmu.tables.generation ||
+                                     entry->ncc_select != tmu.tables.ncc_select)) {
     entry->stale = true;
   }
   const bool native = source.format == GR_TEXFMT_ARGB_4444;
@@ -232,6 +234,7 @@ BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
     }
     entry->stale = false;
     entry->table_generation = tmu.tables.generation;
+    entry->ncc_select = tmu.tables.ncc_select;
   }
 
   BoundTexture bound = entry->bound;

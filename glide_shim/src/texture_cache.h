@@ -52,7 +52,8 @@ class TextureCache {
     Key key;
     unsigned name = 0;
     std::int64_t begin = 0, end = 0;  // bytes of TMU memory the levels span
-    FxU32 table_generation = 0;       // for formats read through the tables
+    FxU32 table_generation = 0;       // for formats read through the tables: the tables'
+    GrNCCTable_t ncc_select = 0;      // generation and NCC choice the upload decoded with
     bool stale = true;
     BoundTexture bound;
   };
