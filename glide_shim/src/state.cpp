@@ -38,13 +38,16 @@ struct PackedState {
   FxU32 fog_color;
   FxU8 fog_table[GR_FOG_TABLE_SIZE];
   FxI32 clamp_s, clamp_t, min_filter, mag_filter, mipmap_mode;
-  FxU8 lod_blend;
+  FxU8 lod_blend, allow_lod_dither, lod_dither, multibase;
   float lod_bias;
+  std::int64_t base[4];
   FxI32 tmu_rgb_function, tmu_rgb_factor, tmu_alpha_function, tmu_alpha_factor;
   FxU8 tmu_rgb_invert, tmu_alpha_invert;
   FxU8 source_valid;
   FxU32 source_address;
   FxI32 source_small_lod, source_large_lod, source_aspect, source_format;
+  FxU32 source_even_odd;
+  FxI32 ncc_select;
 };
 #pragma pack(pop)
 
@@ -95,7 +98,11 @@ PackedState save(const glide_shim::GlideContext &ctx) {
   s.min_filter = tmu.min_filter, s.mag_filter = tmu.mag_filter;
   s.mipmap_mode = tmu.mipmap_mode;
   s.lod_blend = tmu.lod_blend ? 1 : 0;
+  s.allow_lod_dither = tmu.allow_lod_dither ? 1 : 0;
+  s.lod_dither = tmu.lod_dither ? 1 : 0;
+  s.multibase = tmu.multibase ? 1 : 0;
   s.lod_bias = tmu.lod_bias;
+  std::memcpy(s.base, tmu.base, sizeof s.base);
   s.tmu_rgb_function = tmu.combine.rgb_function, s.tmu_rgb_factor = tmu.combine.rgb_factor;
   s.tmu_alpha_function = tmu.combine.alpha_function;
   s.tmu_alpha_factor = tmu.combine.alpha_factor;
@@ -105,6 +112,8 @@ PackedState save(const glide_shim::GlideContext &ctx) {
   s.source_address = tmu.source.address;
   s.source_small_lod = tmu.source.small_lod, s.source_large_lod = tmu.source.large_lod;
   s.source_aspect = tmu.source.aspect, s.source_format = tmu.source.format;
+  s.source_even_odd = tmu.source.even_odd;
+  s.ncc_select = tmu.tables.ncc_select;
   return s;
 }
 
@@ -136,11 +145,16 @@ void restore(glide_shim::GlideContext &ctx, const PackedState &s) {
   tmu.min_filter = s.min_filter, tmu.mag_filter = s.mag_filter;
   tmu.mipmap_mode = s.mipmap_mode;
   tmu.lod_blend = s.lod_blend != 0;
+  tmu.allow_lod_dither = s.allow_lod_dither != 0;
+  tmu.lod_dither = s.lod_dither != 0;
+  tmu.multibase = s.multibase != 0;
   tmu.lod_bias = s.lod_bias;
+  std::memcpy(tmu.base, s.base, sizeof s.base);
   tmu.combine = {s.tmu_rgb_function, s.tmu_rgb_factor, s.tmu_alpha_function,
                  s.tmu_alpha_factor, s.tmu_rgb_invert != 0, s.tmu_alpha_invert != 0};
   tmu.source = {s.source_valid != 0, s.source_address, s.source_small_lod,
-                s.source_large_lod, s.source_aspect, s.source_format};
+                s.source_large_lod, s.source_aspect, s.source_format, s.source_even_odd};
+  tmu.tables.ncc_select = s.ncc_select;
 }
 
 }  // namespace
