@@ -1,10 +1,13 @@
 // The beam and attenuation texture units of the plain-GL lit passes. See gl_light_units.h.
 #include "gl_light_units.h"
 
+#include "slide_projector.h"
 #include "spotlight.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -14,12 +17,14 @@ namespace {
 constexpr int kBeamSide = 128;            // texels, as the Glide passes use
 constexpr int kAttenuationWidth = 256;    // texels over [near plane, farthest]
 
-GLuint make_luminance_texture(const GlApi &gl, int width, int height, const std::uint8_t *texels) {
+// A texture of `width` x `height` texels of `channels` bytes (1: luminance, 3: RGB), row 0 first.
+// Every row used here is a multiple of 4 bytes, GL's default unpack alignment.
+GLuint make_texture(const GlApi &gl, int width, int height, int channels, const std::uint8_t *texels) {
   GLuint texture = 0;
   gl.glGenTextures(1, &texture);
   gl.glBindTexture(GL_TEXTURE_2D, texture);
-  gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE8, width, height, 0, GL_LUMINANCE,
-                  GL_UNSIGNED_BYTE, texels);
+  gl.glTexImage2D(GL_TEXTURE_2D, 0, channels == 3 ? GL_RGB8 : GL_LUMINANCE8, width, height, 0,
+                  channels == 3 ? GL_RGB : GL_LUMINANCE, GL_UNSIGNED_BYTE, texels);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -44,18 +49,29 @@ void set_texgen(const GlApi &gl, const glm::mat4 &world_to_texture) {
 
 }  // namespace
 
-GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthest)
+GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthest,
+                           const glm::vec3 &origin)
     : gl_(gl), light_(light), nearest_(kLightNearPlane),
-      farthest_(std::max(farthest, kLightNearPlane * 2.0f)) {
+      farthest_(std::max(farthest, kLightNearPlane * 2.0f)), origin_(origin) {
   // Made on unit 2, so whatever the caller has bound on units 0 and 1 stays bound.
   gl.glActiveTexture(GL_TEXTURE2);
-  // The beam map's rows go up the beam: GL's t = 0 is the first row uploaded.
-  const std::vector<std::uint8_t> top_first = beam_texels(light, kBeamSide);
+  // The projected texture's rows go up the beam: GL's t = 0 is the first row uploaded.
+  int side = kBeamSide, channels = 1;
+  std::vector<std::uint8_t> top_first;
+  if (light.is_projector()) {
+    const ProjectedImage slide = slide_image(light);
+    side = slide.side, channels = 3;
+    for (const glm::vec3 &c : slide.rgb)
+      for (int k = 0; k < 3; ++k) top_first.push_back(static_cast<std::uint8_t>(std::lround(c[k] * 255.0f)));
+  } else {
+    top_first = beam_texels(light, kBeamSide);
+  }
+  const std::size_t row_bytes = static_cast<std::size_t>(side * channels);
   std::vector<std::uint8_t> bottom_first(top_first.size());
-  for (int row = 0; row < kBeamSide; ++row)
-    std::copy_n(top_first.begin() + (kBeamSide - 1 - row) * kBeamSide, kBeamSide,
-                bottom_first.begin() + row * kBeamSide);
-  beam_ = make_luminance_texture(gl, kBeamSide, kBeamSide, bottom_first.data());
+  for (int row = 0; row < side; ++row)
+    std::copy_n(top_first.begin() + static_cast<std::ptrdiff_t>((side - 1 - row) * row_bytes), row_bytes,
+                bottom_first.begin() + static_cast<std::ptrdiff_t>(row * row_bytes));
+  beam_ = make_texture(gl, side, side, channels, bottom_first.data());
   // Texel 0 black covers depths before the near plane; the others the function over the range
   // (all 1 unless the attenuation is exact, when the vertex colours carry it).
   SpotLight function = light;
@@ -64,7 +80,7 @@ GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthe
   std::vector<std::uint8_t> ramp =
       attenuation_texels(function, nearest_, farthest_, kAttenuationWidth - 1);
   ramp.insert(ramp.begin(), 0);
-  attenuation_ = make_luminance_texture(gl, kAttenuationWidth, 1, ramp.data());
+  attenuation_ = make_texture(gl, kAttenuationWidth, 1, 1, ramp.data());
   gl.glActiveTexture(GL_TEXTURE0);
 }
 
@@ -74,14 +90,16 @@ GlLightUnits::~GlLightUnits() {
 }
 
 void GlLightUnits::bind() {
-  const glm::mat4 light_clip = light_projection(light_) * light_view(light_);
+  // The arrays' coordinates to world, then world to the light.
+  const glm::mat4 to_world = glm::translate(glm::mat4(1.0f), origin_);
+  const glm::mat4 view = light_view(light_) * to_world;
+  const glm::mat4 light_clip = light_projection(light_) * view;
   const glm::mat4 to_beam = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0.0f)) *
                             glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f)) * light_clip;
   // s: the depth's place in the texture: texel 0 centred before the near plane, the ramp's
   // texel i at near + (i + 0.5) / 255 of the range, i.e. s = (1 + (d - near) / range * 255) / 256.
   const float width = static_cast<float>(kAttenuationWidth);
   const float per_metre = (width - 1.0f) / (farthest_ - nearest_) / width;
-  const glm::mat4 view = light_view(light_);
   glm::mat4 to_attenuation(0.0f);
   for (int column = 0; column < 4; ++column) to_attenuation[column][0] = -view[column][2] * per_metre;
   to_attenuation[3][0] += 1.0f / width - nearest_ * per_metre;

@@ -6,6 +6,7 @@
 
 #include "lighting.h"
 #include "projection.h"
+#include "slide_projector.h"
 #include "spotlight.h"
 
 #include <embree3/rtcore.h>
@@ -184,6 +185,7 @@ struct Caster {
   const std::vector<const Body *> &by_geometry;
   glm::dmat4 screen_to_world;  // inverse of camera projection * view, NDC to world
   double offset;               // world, shadow-ray start off the surface
+  std::vector<ProjectedImage> slides;  // per light: its slide, empty unless a projector
 };
 
 // Whether `light` reaches the surface point, and if blocked, whether another object blocks it.
@@ -270,7 +272,15 @@ void cast_pixel(const Caster &c, int i, int j, GroundTruth &truth) {
   bool by_other_any = false, by_self_only_any = false;
   for (std::size_t l = 0; l < lights; ++l) {
     const SpotLight &light = scene.lights[l];
-    if (light.is_projector()) continue;  // it lights through its slide only; stays Outside
+    if (light.is_projector()) {
+      // The slide's colour where the projector sees a surface facing it (Segal et al.'s pass 2,
+      // which ignores occlusion); it casts no shadow, so the light's reach stays Outside.
+      glm::vec2 uv;
+      if (glm::dot(face, glm::dvec3(light.position) - point) > 0.0 &&
+          beam_coordinates(light, glm::vec3(point), uv))
+        light_sum += light.color * sample_projected_image(c.slides[l], uv);
+      continue;
+    }
     bool by_other = false;
     const LightReach reach = reach_light(c, light, point, face, hit.hit.geomID, by_other);
     truth.reach[pixel * lights + l] = reach;
@@ -339,7 +349,9 @@ bool compute_ground_truth(const Scene &scene, GroundTruth &truth, std::string &e
   out.self_shadow.assign(pixels, 0);
   out.rgb.assign(pixels * 3, 0);
 
-  const Caster caster{scene, handles.scene, by_geometry, screen_to_world, kOffsetScale * radius};
+  Caster caster{scene, handles.scene, by_geometry, screen_to_world, kOffsetScale * radius, {}};
+  for (const SpotLight &light : scene.lights)
+    caster.slides.push_back(light.is_projector() ? slide_image(light) : ProjectedImage{});
   // Threads take rows from a counter; every pixel depends only on its own ray, so the bytes are
   // the same whatever the thread count or the order rows are taken in.
   std::atomic<int> next_row{0};

@@ -28,7 +28,10 @@ float spot_factor(const SpotLight &light, const glm::vec3 &world) {
 
 glm::vec3 vertex_light_term(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal,
                             bool attenuation_per_pixel) {
-  const float diffuse = std::max(0.0f, glm::dot(normal, glm::normalize(light.position - world)));
+  const float facing = glm::dot(normal, glm::normalize(light.position - world));
+  // A slide adds its colour where the projector sees the surface, whatever the angle.
+  if (light.is_projector()) return facing > 0.0f ? light.color : glm::vec3(0.0f);
+  const float diffuse = std::max(0.0f, facing);
   const float beam = light.has_beam_map() ? 1.0f : spot_factor(light, world);
   const float attenuation =
       attenuation_per_pixel ? 1.0f : distance_attenuation(light, axial_distance(light, world));

@@ -12,8 +12,9 @@ glm::vec3 shade_vertex(const Scene &scene, const glm::vec3 &world, const glm::ve
                        const glm::vec3 &albedo);
 
 // One light's direct term at a vertex on a white surface, for passes that apply the light's beam
-// map as a texture: colour x Lambert diffuse, x the cone for a light without a beam map, x the
-// distance attenuation unless the pass applies it per pixel.
+// map or slide as a texture: colour x Lambert diffuse, x the cone for a light without a beam map,
+// x the distance attenuation unless the pass applies it per pixel; a slide projector's colour
+// where the surface faces it.
 glm::vec3 vertex_light_term(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal,
                             bool attenuation_per_pixel);
 

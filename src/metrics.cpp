@@ -182,6 +182,22 @@ MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
   return errors;
 }
 
+namespace {
+
+// OpenImageIO's comparison, its PSNR made finite for identical images.
+ImageErrors compare_buffers(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b) {
+  const OIIO::ImageBufAlgo::CompareResults r =
+      OIIO::ImageBufAlgo::compare(a, b, kFailThreshold, kFailThreshold);
+  ImageErrors errors;
+  errors.mean = r.meanerror;
+  errors.max = r.maxerror;
+  errors.psnr = std::isfinite(r.PSNR) ? r.PSNR : kIdenticalPsnrDb;
+  errors.pixels_over_threshold = static_cast<long>(r.nfail);
+  return errors;
+}
+
+}  // namespace
+
 bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
                     ImageErrors &errors, std::string &error) {
   OIIO::ImageBuf image_a, image_b;
@@ -196,13 +212,17 @@ bool compare_images(const std::string &a, const std::string &b, const std::strin
   }
   // r.error is not checked: OIIO 2.4 sets it whenever a pixel exceeds the threshold, and both
   // images were read and matched in size above, which is all compare needs.
-  const OIIO::ImageBufAlgo::CompareResults r =
-      OIIO::ImageBufAlgo::compare(image_a, image_b, kFailThreshold, kFailThreshold);
-  errors.mean = r.meanerror;
-  errors.max = r.maxerror;
-  errors.psnr = std::isfinite(r.PSNR) ? r.PSNR : kIdenticalPsnrDb;
-  errors.pixels_over_threshold = static_cast<long>(r.nfail);
+  errors = compare_buffers(image_a, image_b);
   return heat_map.empty() || write_heat_map(image_a, image_b, heat_map, error);
+}
+
+ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
+                        int width, int height) {
+  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  OIIO::ImageBuf image_a(spec), image_b(spec);
+  image_a.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, a.data());
+  image_b.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, b.data());
+  return compare_buffers(image_a, image_b);
 }
 
 bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,

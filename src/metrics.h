@@ -37,6 +37,10 @@ struct ImageErrors {
 bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
                     ImageErrors &errors, std::string &error);
 
+// The same comparison of two 8-bit RGB images in memory (rows from the top, 3 bytes a pixel).
+ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
+                        int width, int height);
+
 // Reads a mask PNG (any pixel with a channel above half is 1).
 bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
                std::string &error);

@@ -277,6 +277,19 @@ std::vector<FxU16> slide_texels(const SpotLight &projector, int &side) {
   return texels;
 }
 
+ProjectedImage slide_image(const SpotLight &projector) {
+  ProjectedImage image;
+  const std::vector<FxU16> texels = slide_texels(projector, image.side);
+  image.rgb.reserve(texels.size());
+  for (FxU16 t : texels) {
+    const unsigned r = t >> 11, g = t >> 5 & 0x3F, b = t & 0x1F;
+    image.rgb.emplace_back(static_cast<float>(r << 3 | r >> 2) / 255.0f,
+                           static_cast<float>(g << 2 | g >> 4) / 255.0f,
+                           static_cast<float>(b << 3 | b >> 2) / 255.0f);
+  }
+  return image;
+}
+
 bool needs_projective_passes(const Scene &scene) {
   return std::any_of(scene.lights.begin(), scene.lights.end(), [](const SpotLight &light) {
     return light.is_projector() || light.has_beam_map();

@@ -22,6 +22,10 @@ bool is_slide_pattern(const std::string &name);  // checker, rings, grid
 // with a black outer texel, so clamp mode adds nothing outside it.
 std::vector<FxU16> slide_texels(const SpotLight &projector, int &side);
 
+// The same slide as colours 0..1 (each 565 field widened by bit replication, as the TMU reads
+// it), for renderers that sample it themselves: the ground truth, the plain-GL techniques.
+ProjectedImage slide_image(const SpotLight &projector);
+
 // True when a light projects a texture (a slide or a beam map), so the scene needs these passes.
 bool needs_projective_passes(const Scene &scene);
 // The scene pass when projective lights light the scene (render_scene calls it).

@@ -41,8 +41,13 @@ float lens_beam(const glm::vec2 &uv) {
   return round_beam(uv) * (0.6f + 0.4f * std::cos(glm::two_pi<float>() * 3.0f * distorted));
 }
 
-// Bilinear luminance of an image at beam-plane (u, v); texel centres at (i + 0.5) / side.
-float image_luminance(const ProjectedImage &image, const glm::vec2 &uv) {
+std::uint8_t to_byte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+}  // namespace
+
+glm::vec3 sample_projected_image(const ProjectedImage &image, const glm::vec2 &uv) {
   const float side = static_cast<float>(image.side);
   const float x = (uv.x * 0.5f + 0.5f) * side - 0.5f;  // texels, from the left
   const float y = (0.5f - uv.y * 0.5f) * side - 0.5f;  // texels, from the top
@@ -51,19 +56,12 @@ float image_luminance(const ProjectedImage &image, const glm::vec2 &uv) {
   auto texel = [&](float tx, float ty) {
     const int ix = std::clamp(static_cast<int>(tx), 0, image.side - 1);
     const int iy = std::clamp(static_cast<int>(ty), 0, image.side - 1);
-    const glm::vec3 &c = image.rgb[static_cast<std::size_t>(iy * image.side + ix)];
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+    return image.rgb[static_cast<std::size_t>(iy * image.side + ix)];
   };
-  const float top = texel(x0, y0) * (1.0f - fx) + texel(x0 + 1.0f, y0) * fx;
-  const float bottom = texel(x0, y0 + 1.0f) * (1.0f - fx) + texel(x0 + 1.0f, y0 + 1.0f) * fx;
-  return std::clamp(top * (1.0f - fy) + bottom * fy, 0.0f, 1.0f);
+  const glm::vec3 top = texel(x0, y0) * (1.0f - fx) + texel(x0 + 1.0f, y0) * fx;
+  const glm::vec3 bottom = texel(x0, y0 + 1.0f) * (1.0f - fx) + texel(x0 + 1.0f, y0 + 1.0f) * fx;
+  return top * (1.0f - fy) + bottom * fy;
 }
-
-std::uint8_t to_byte(float v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-}
-
-}  // namespace
 
 glm::mat4 light_view(const SpotLight &light) {
   // A light looking straight up or down takes +z as its up, where the default +y is degenerate.
@@ -90,7 +88,10 @@ bool is_beam_pattern(const std::string &name) {
 
 float beam_intensity(const SpotLight &light, const glm::vec2 &uv) {
   if (std::abs(uv.x) >= 1.0f || std::abs(uv.y) >= 1.0f) return 0.0f;
-  if (light.beam_image) return image_luminance(*light.beam_image, uv);
+  if (light.beam_image) {
+    const glm::vec3 c = sample_projected_image(*light.beam_image, uv);
+    return std::clamp(0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b, 0.0f, 1.0f);
+  }
   if (light.beam == "round") return round_beam(uv);
   if (light.beam == "square") return square_beam(uv);
   if (light.beam == "gobo") return gobo_beam(uv);

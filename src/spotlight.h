@@ -32,6 +32,9 @@ bool is_beam_pattern(const std::string &name);  // round, square, gobo, lens
 // sampled (its luminance). 0 outside [-1, 1]^2.
 float beam_intensity(const SpotLight &light, const glm::vec2 &uv);
 
+// An image's colour at beam-plane (u, v), bilinear between texel centres, clamped at the edges.
+glm::vec3 sample_projected_image(const ProjectedImage &image, const glm::vec2 &uv);
+
 // Attenuation with distance, 1 / (constant + linear d + quadratic d^2) clamped to 1, where d is
 // the light-space depth (the distance along the beam's axis, the paper's z_t before its
 // projective mapping): the same on every point of a plane facing the light.

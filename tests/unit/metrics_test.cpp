@@ -271,6 +271,27 @@ TEST(CompareImages, IdenticalImagesHaveFiniteDocumentedPsnr) {
   EXPECT_EQ(e.psnr, 999.0);
 }
 
+// Frames in memory (the bench's whole-image error) are compared as the files are.
+TEST(CompareImages, InMemoryRgbMatchesTheFileComparison) {
+  const int w = 4, h = 2;
+  std::vector<unsigned char> black(w * h * 3, 0), changed(w * h * 3, 0);
+  changed[0] = 255;
+  changed[6] = 2;
+  const std::string a = temp_path("mem_a.png"), b = temp_path("mem_b.png");
+  write_png(a, w, h, 3, black);
+  write_png(b, w, h, 3, changed);
+  ImageErrors from_files;
+  std::string error;
+  ASSERT_TRUE(compare_images(a, b, "", from_files, error)) << error;
+  const ImageErrors in_memory = compare_rgb(black, changed, w, h);
+  EXPECT_DOUBLE_EQ(in_memory.mean, from_files.mean);
+  EXPECT_DOUBLE_EQ(in_memory.max, from_files.max);
+  EXPECT_DOUBLE_EQ(in_memory.psnr, from_files.psnr);
+  EXPECT_EQ(in_memory.pixels_over_threshold, 2);
+  EXPECT_NEAR(in_memory.mean, (1.0 + 2.0 / 255) / (w * h * 3), 1e-6);
+  EXPECT_EQ(compare_rgb(changed, changed, w, h).psnr, 999.0);
+}
+
 TEST(CompareImages, ReportsMissingFileAndSizeMismatchByName) {
   const std::string a = temp_path("small.png"), b = temp_path("large.png");
   const std::string missing = temp_path("does_not_exist.png");
