@@ -3,6 +3,8 @@
 // every shape winds counter-clockwise seen from outside and closed shapes share no open edge.
 #include "mesh.h"
 
+#include "input_file.h"
+
 #define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>
 
@@ -11,10 +13,16 @@
 #include <cstdint>
 #include <glm/gtc/constants.hpp>
 #include <map>
+#include <sstream>
 #include <utility>
 
 namespace gs {
 namespace {
+
+// An OBJ file's limits: 256 MiB of text holds a few million faces; the triangle limit is the
+// scene's whole budget (scene_file.cpp), so no single mesh can ask for more than a scene may hold.
+constexpr std::size_t kMaxObjFileBytes = 256u << 20;
+constexpr std::size_t kMaxObjTriangles = 2'000'000;
 
 const glm::vec3 kWhite(1.0f);
 const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
@@ -204,16 +212,35 @@ bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
-  std::string warning, message;
+  std::string warning, message, text;
+  if (!read_input_file(path, kMaxObjFileBytes, text, message)) {
+    error = path + ": " + message;
+    return false;
+  }
+  std::istringstream stream(text);
   // Faces are read untriangulated so that every index reaches the range check below (tinyobj
   // skips quads with bad indices silently); they are fanned here, as OBJ polygons are convex.
-  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &message, path.c_str(), nullptr,
+  // No material reader: colours come from the scene file, and an `mtllib` line must not make
+  // the loader open another file.
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &message, &stream, nullptr,
                         false)) {
     error = path + ": " + (message.empty() ? "not a readable OBJ file" : trimmed(message));
     return false;
   }
   const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
   const auto normal_count = static_cast<int>(attrib.normals.size() / 3);
+
+  // Counted before anything is built: a face of n corners fans into n - 2 triangles.
+  std::size_t triangle_total = 0;
+  for (const tinyobj::shape_t &shape : shapes) {
+    for (const std::size_t face_size : shape.mesh.num_face_vertices)
+      triangle_total += face_size >= 3 ? face_size - 2 : 0;
+  }
+  if (triangle_total > kMaxObjTriangles) {
+    error = path + ": " + std::to_string(triangle_total) + " triangles, more than the limit of " +
+            std::to_string(kMaxObjTriangles);
+    return false;
+  }
 
   std::vector<tinyobj::index_t> corners;  // three per triangle, in file order
   bool every_corner_has_normal = true;

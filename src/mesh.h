@@ -32,7 +32,9 @@ Mesh make_plane(float size, int divisions);
 // Like make_plane, lifted by height(x, z); normals from the surface's gradient.
 Mesh make_heightfield(float size, int divisions, const std::function<float(float, float)> &height);
 
-// Loads a Wavefront OBJ through tinyobjloader (triangulated; normals computed when absent).
+// Loads a Wavefront OBJ through tinyobjloader (triangulated; normals computed when absent;
+// materials ignored). Files over 256 MiB or 2,000,000 triangles, and paths that are not regular
+// files, are refused.
 // False, with `error` naming the file and the problem, on failure; `mesh` is left unchanged.
 bool load_obj(const std::string &path, Mesh &mesh, std::string &error);
 
