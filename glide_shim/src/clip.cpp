@@ -1,7 +1,8 @@
-// guDrawTriangleWithClip and guDrawPolygonVertexListWithClip, as 3dfx's guclip.c does them:
-// polygons inside the clip window go straight to the rasteriser; the rest are clipped in screen
-// space (right, bottom, left, top), every attribute interpolated linearly, and drawn as a fan.
-// There is no near-plane clipping: the program must keep w > 0, as on the hardware.
+// guDrawTriangleWithClip, guDrawPolygonVertexListWithClip and guAADrawTriangleWithClip, as
+// 3dfx's guclip.c does them: polygons inside the clip window go straight to the rasteriser; the
+// rest are clipped in screen space (right, bottom, left, top), every attribute interpolated
+// linearly, and drawn as a fan. There is no near-plane clipping: the program must keep w > 0,
+// as on the hardware.
 #include "draw.h"
 
 #include <string>
@@ -39,8 +40,8 @@ std::vector<ShimVertex> clip_edge(const std::vector<ShimVertex> &polygon, bool u
 }
 
 // Clips a convex polygon (screen pixels) to the clip window unless it lies inside, then
-// draws it as a fan from its first vertex.
-void clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVertex> polygon) {
+// draws it as a fan from its first vertex; returns the polygon drawn.
+std::vector<ShimVertex> clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVertex> polygon) {
   const auto &clip = ctx.raster.clip;
   const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
   const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
@@ -58,6 +59,7 @@ void clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVertex> polygon) {
   for (std::size_t i = 2; i < polygon.size(); ++i) {
     queue_triangle(ctx, polygon[0], polygon[i - 1], polygon[i]);
   }
+  return polygon;
 }
 
 }  // namespace
@@ -110,6 +112,32 @@ void guDrawPolygonVertexListWithClip(int nverts, const GrVertex vlist[]) {
     }
   }
   glide_shim::clip_and_draw_fan(ctx, std::move(polygon));
+}
+
+void guAADrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
+  auto &ctx = current();
+  if (!ctx.require_open("guAADrawTriangleWithClip")) return;
+  if (a == nullptr || b == nullptr || c == nullptr) {
+    ctx.report(GLIDESHIM_ERR_NULL_POINTER, "guAADrawTriangleWithClip: a vertex pointer is NULL");
+    return;
+  }
+  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
+  std::vector<ShimVertex> polygon(3);
+  const GrVertex *in[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], polygon[static_cast<std::size_t>(i)],
+                                    "guAADrawTriangleWithClip", glide_shim::kMaxClippedCoordinate)) {
+      return;
+    }
+  }
+  // The clipped polygon with a fringe on every edge; fringes along the clip window's edges
+  // fall outside it and are clipped away, as on the hardware.
+  const std::vector<ShimVertex> drawn = glide_shim::clip_and_draw_fan(ctx, std::move(polygon));
+  const float area = glide_shim::signed_area(drawn);
+  if (area == 0.0f) return;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    glide_shim::queue_fringe(ctx, drawn[i], drawn[(i + 1) % drawn.size()], area > 0.0f ? 1.0f : -1.0f);
+  }
 }
 
 }  // extern "C"

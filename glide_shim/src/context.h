@@ -155,6 +155,8 @@ struct FogState {  // grFogMode, grFogColorValue, grFogTable
 struct PerfStatsState {
   bool counting;
   GrSstPerfStats_t counts;
+  FxU32 triangles_processed;  // grTriStats: triangles given to the rasteriser's setup
+  FxU32 triangles_drawn;      // and those left after culling and zero-area rejection
 };
 
 struct ErrorState {

@@ -82,11 +82,42 @@ bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrV
 void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
                     const ShimVertex &c) {
   const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  ++context.perf.triangles_processed;
   if (area == 0.0f) return;
   if (context.raster.cull == GR_CULL_NEGATIVE && area < 0.0f) return;
   if (context.raster.cull == GR_CULL_POSITIVE && area > 0.0f) return;
+  ++context.perf.triangles_drawn;
   const ShimVertex triangle[3] = {a, b, c};
   context.renderer->queue(Primitive::Triangles, triangle, 3);
+}
+
+// Twice the signed area of a polygon in screen pixels (the sign is its winding).
+float signed_area(const std::vector<ShimVertex> &polygon) {
+  float area = 0.0f;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const ShimVertex &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    area += p.x * q.y - q.x * p.y;
+  }
+  return area;
+}
+
+// The hardware's antialiasing (gaa.c): a one-pixel fringe outside edge p->q, stepped along the
+// edge's minor axis, whose outer vertices have alpha 0, so blending with the iterated alpha
+// fades the edge. Wound like the polygon, so culling treats it the same.
+void queue_fringe(GlideContext &context, const ShimVertex &p, const ShimVertex &q, float winding) {
+  const float dx = q.x - p.x, dy = q.y - p.y;
+  const float out_x = winding * dy, out_y = -winding * dx;  // outward normal (screen pixels)
+  ShimVertex p_out = p, q_out = q;
+  if (std::fabs(dx) >= std::fabs(dy)) {
+    const float step = out_y > 0.0f ? 1.0f : -1.0f;
+    p_out.y += step, q_out.y += step;
+  } else {
+    const float step = out_x > 0.0f ? 1.0f : -1.0f;
+    p_out.x += step, q_out.x += step;
+  }
+  p_out.a = q_out.a = 0.0f;
+  queue_triangle(context, q, p, p_out);
+  queue_triangle(context, q, p_out, q_out);
 }
 
 namespace {
@@ -128,35 +159,6 @@ void queue_fan(GlideContext &context, const std::vector<ShimVertex> &polygon) {
   for (std::size_t i = 2; i < polygon.size(); ++i) {
     queue_triangle(context, polygon[0], polygon[i - 1], polygon[i]);
   }
-}
-
-// Twice the signed area of a polygon in screen pixels (the sign is its winding).
-float signed_area(const std::vector<ShimVertex> &polygon) {
-  float area = 0.0f;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const ShimVertex &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
-    area += p.x * q.y - q.x * p.y;
-  }
-  return area;
-}
-
-// The hardware's antialiasing (gaa.c): a one-pixel fringe outside edge p->q, stepped along the
-// edge's minor axis, whose outer vertices have alpha 0, so blending with the iterated alpha
-// fades the edge. Wound like the polygon, so culling treats it the same.
-void queue_fringe(GlideContext &context, const ShimVertex &p, const ShimVertex &q, float winding) {
-  const float dx = q.x - p.x, dy = q.y - p.y;
-  const float out_x = winding * dy, out_y = -winding * dx;  // outward normal (screen pixels)
-  ShimVertex p_out = p, q_out = q;
-  if (std::fabs(dx) >= std::fabs(dy)) {
-    const float step = out_y > 0.0f ? 1.0f : -1.0f;
-    p_out.y += step, q_out.y += step;
-  } else {
-    const float step = out_x > 0.0f ? 1.0f : -1.0f;
-    p_out.x += step, q_out.x += step;
-  }
-  p_out.a = q_out.a = 0.0f;
-  queue_triangle(context, q, p, p_out);
-  queue_triangle(context, q, p_out, q_out);
 }
 
 void draw_polygon(const char *function, int nverts, const int *ilist, bool indexed,

@@ -5,6 +5,8 @@
 #include "context.h"
 #include "gl_renderer.h"
 
+#include <vector>
+
 namespace glide_shim {
 
 struct VertexFields {  // which GrVertex fields the current state reads
@@ -28,5 +30,10 @@ void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex
                     const ShimVertex &c);
 
 float snap(float coordinate);  // to 1/16 pixel, as the hardware's 12.4 setup does
+
+// Twice the signed area of a polygon in screen pixels; its sign is the winding.
+float signed_area(const std::vector<ShimVertex> &polygon);
+// The antialiasing fringe outside edge p->q of a polygon wound as `winding` (+1 or -1).
+void queue_fringe(GlideContext &context, const ShimVertex &p, const ShimVertex &q, float winding);
 
 }  // namespace glide_shim

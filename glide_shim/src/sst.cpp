@@ -215,6 +215,20 @@ FxU32 grSstStatus(void) {
   return 0x3Fu | (1u << 6) | (displayed << 10) | (0xFFFFu << 12);
 }
 
+FxBool grSstControl(FxU32 code) {
+  auto &ctx = current();
+  if (!ctx.require_open("grSstControl")) return FXFALSE;
+  if (code < GR_CONTROL_ACTIVATE || code > GR_CONTROL_MOVE) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM, "grSstControl: unknown code " + std::to_string(code));
+    return FXFALSE;
+  }
+  return FXTRUE;  // activating, hiding, resizing or moving a window: nothing to do headless
+}
+
+void grCheckForRoom(FxI32 n) {
+  (void)n;  // the command FIFO is the shim's queue, which always has room
+}
+
 void grSplash(float x, float y, float width, float height, FxU32 frame) {
   // The 3dfx start-up animation is not part of the shim: a harmless no-op, as when the splash
   // is disabled (FX_GLIDE_NO_SPLASH).

@@ -1,5 +1,6 @@
 // grSstPerfStats counts, exactly, on a scene whose counts are known: squares that pass, fail
-// the depth test, fail the chroma key, and fail the alpha test, in the Voodoo's test order.
+// the depth test, fail the chroma key, and fail the alpha test, in the Voodoo's test order; and
+// grTriStats' triangle counts.
 #include "glide_window.h"
 
 namespace {
@@ -59,8 +60,31 @@ TEST_F(PerfStatsTest, CountsEveryStageOfAKnownScene) {
   expect_no_error();
 }
 
-TEST_F(PerfStatsTest, NullPointerIsRefused) {
+TEST_F(PerfStatsTest, TriangleStatsCountSetUpAndDrawnTriangles) {
+  grResetTriStats();
+  grCullMode(GR_CULL_NEGATIVE);
+  GrVertex a = vertex(), b = vertex(), c = vertex();
+  a.x = 2, a.y = 2, b.x = 30, b.y = 2, c.x = 2, c.y = 30;
+  grDrawTriangle(&a, &b, &c);  // positive area on screen: drawn
+  grDrawTriangle(&a, &c, &b);  // negative: culled
+  grDrawTriangle(&a, &a, &b);  // zero area: dropped
+  square(40, 40, 8, 8, 255, 255, 255, 255, 0);  // two more, drawn
+  FxU32 processed = 0, drawn = 0;
+  grTriStats(&processed, &drawn);
+  EXPECT_EQ(processed, 5u);
+  EXPECT_EQ(drawn, 3u);
+  grResetTriStats();
+  grTriStats(&processed, &drawn);
+  EXPECT_EQ(processed + drawn, 0u);
+  expect_no_error();
+}
+
+TEST_F(PerfStatsTest, NullPointersAreRefused) {
   grSstPerfStats(nullptr);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_NULL_POINTER);
+  glideShimClearError();
+  FxU32 count = 0;
+  grTriStats(&count, nullptr);
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_NULL_POINTER);
   glideShimClearError();
 }

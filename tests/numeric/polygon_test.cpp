@@ -141,6 +141,35 @@ TEST_F(PolygonTest, AntialiasedEdgesAddAnAlphaFringe) {
   expect_no_error();
 }
 
+TEST_F(PolygonTest, ClippedAntialiasedTriangleKeepsItsFringeInsideTheWindow) {
+  guAlphaSource(GR_ALPHASOURCE_ITERATED_ALPHA);
+  grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE, GR_BLEND_ZERO);
+  GrVertex a = vertex(), b = vertex(), c = vertex();
+  a.x = 10, a.y = 12, b.x = 90, b.y = 30, c.x = 20, c.y = 55;  // b is off the screen's right
+  for (GrVertex *v : {&a, &b, &c}) v->r = v->g = v->b = v->a = 255;
+  grBufferClear(0, 0, 0);
+  grClipWindow(4, 4, 48, 60);
+  guAADrawTriangleWithClip(&a, &b, &c);
+  const std::vector<FxU16> aa = read_buffer();
+  grClipWindow(0, 0, kWidth, kHeight);
+  grBufferClear(0, 0, 0);
+  grClipWindow(4, 4, 48, 60);
+  guDrawTriangleWithClip(&a, &b, &c);
+  const std::vector<FxU16> plain = read_buffer();
+  int outside = 0, fringe = 0, white_lost = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kWidth + x);
+      if (x < 4 || x >= 48 || y < 4 || y >= 60) outside += aa[i] != 0;
+      if (plain[i] == 0 && aa[i] != 0) ++fringe;
+      if (plain[i] == 0xFFFF && aa[i] == 0) ++white_lost;
+    }
+  EXPECT_EQ(outside, 0);
+  EXPECT_GT(fringe, 30);  // along the two unclipped edges
+  EXPECT_EQ(white_lost, 0);
+  expect_no_error();
+}
+
 TEST_F(PolygonTest, AntialiasedLineHasFadingSides) {
   guAlphaSource(GR_ALPHASOURCE_ITERATED_ALPHA);
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE, GR_BLEND_ZERO);

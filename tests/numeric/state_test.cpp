@@ -183,7 +183,13 @@ TEST_F(StateTest, BoardQueriesDescribeAnIdleVoodoo) {
   EXPECT_EQ(boards.num_sst, 1);
   grSplash(0, 0, 64, 64, 0);
   grGlideShamelessPlug(FXTRUE);
+  grCheckForRoom(64);
+  EXPECT_EQ(grSstControl(GR_CONTROL_DEACTIVATE), FXTRUE);
+  EXPECT_EQ(grSstControl(GR_CONTROL_ACTIVATE), FXTRUE);
   expect_no_error();
+  EXPECT_EQ(grSstControl(9), FXFALSE);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_INVALID_ENUM);
+  glideShimClearError();
 }
 
 TEST(StateQueries, QueriesWithoutAWindowReportNotInitialized) {
