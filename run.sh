@@ -4,11 +4,14 @@
 #   ./run.sh demo    build, then render the fighter demo (PNG frames, contact sheet, GIF, timing)
 #   ./run.sh test    build, then run the whole test suite (ctest)
 #   ./run.sh bench   build, then run the benchmark programs
+#   ./run.sh sanitize  build in build-asan/ with ASan+UBSan, then run the whole test suite there
+#   ./run.sh fuzz    build the libFuzzer targets in build-fuzz/ (clang), run each for
+#                    FUZZ_SECONDS (default 30) from fuzz/corpus/; a finding fails the run
 set -euo pipefail
 cd "$(dirname "$0")"
 
 usage() {
-  sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 PACKAGES=(
@@ -17,6 +20,7 @@ PACKAGES=(
   libglm-dev libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libembree-dev
+  clang libclang-rt-14-dev
   libsdl2-dev xvfb xauth xdotool x11-apps
 )
 
@@ -49,6 +53,62 @@ build() {
   echo "run.sh: built in build/ (log: build.log)"
 }
 
+# The sanitizer build: every target with -fsanitize=address,undefined (cmake/sanitizers.cmake).
+# RelWithDebInfo keeps -O2 (the suite's run time) and adds line numbers to the reports.
+build_sanitized() {
+  install_missing_packages
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIDESHADOWS_SANITIZE=ON \
+    -DGLIDESHADOWS_BUILD_BENCH=OFF > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
+  cmake --build build-asan -j"$(nproc)" >> build-asan.log 2>&1 || { tail -50 build-asan.log; exit 1; }
+  echo "run.sh: built in build-asan/ (log: build-asan.log)"
+}
+
+# For every sanitized run: stop at the first report, with a stack; LeakSanitizer skips only the
+# leaks cmake/lsan.supp names (inside Mesa and LLVM, which are not instrumented).
+export_sanitizer_options() {
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+  export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/cmake/lsan.supp:print_suppressions=0}
+}
+
+# The fuzz targets (fuzz/): clang with libFuzzer, ASan and UBSan; only what they link is built.
+FUZZ_TARGETS=(glide_api_fuzz scene_file_fuzz obj_fuzz)
+build_fuzzers() {
+  install_missing_packages
+  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+    -DCMAKE_CXX_COMPILER=clang++ -DGLIDESHADOWS_FUZZ=ON -DGLIDESHADOWS_BUILD_TESTS=OFF \
+    -DGLIDESHADOWS_BUILD_BENCH=OFF > build-fuzz.log 2>&1 || { cat build-fuzz.log; exit 1; }
+  cmake --build build-fuzz -j"$(nproc)" --target "${FUZZ_TARGETS[@]}" >> build-fuzz.log 2>&1 ||
+    { tail -50 build-fuzz.log; exit 1; }
+  echo "run.sh: built ${FUZZ_TARGETS[*]} in build-fuzz/ (log: build-fuzz.log)"
+}
+
+# Each target starts from the checked-in seeds (read only) and writes what it finds new to
+# build-fuzz/corpus/<target>/; a crashing input is saved in build-fuzz/artifacts/.
+run_fuzzers() {
+  local seconds=${FUZZ_SECONDS:-30}
+  local failed=()
+  export_sanitizer_options
+  mkdir -p build-fuzz/artifacts
+  for target in "${FUZZ_TARGETS[@]}"; do
+    mkdir -p "build-fuzz/corpus/$target"
+    echo "run.sh: fuzzing $target for ${seconds}s"
+    if ! "build-fuzz/fuzz/$target" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 \
+        -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$target-" \
+        "build-fuzz/corpus/$target" "fuzz/corpus/$target" > "build-fuzz/$target.log" 2>&1; then
+      tail -40 "build-fuzz/$target.log"
+      failed+=("$target")
+    else
+      grep -E "^(stat::number_of_executed_units|Done)" "build-fuzz/$target.log" || true
+    fi
+  done
+  if [ ${#failed[@]} -gt 0 ]; then
+    echo "run.sh: findings in ${failed[*]} (inputs in build-fuzz/artifacts/, logs in build-fuzz/)" >&2
+    exit 1
+  fi
+  echo "run.sh: ${#FUZZ_TARGETS[@]} fuzz targets ran ${seconds}s each without a finding"
+}
+
 # Mesa's shader cache would otherwise write to ~/.cache; it changes no pixel.
 export MESA_SHADER_CACHE_DISABLE=${MESA_SHADER_CACHE_DISABLE:-true}
 
@@ -62,6 +122,15 @@ case "${1:-}" in
   test)
     build
     ctest --test-dir build --output-on-failure -j2
+    ;;
+  sanitize)
+    build_sanitized
+    export_sanitizer_options
+    ctest --test-dir build-asan --output-on-failure -j2
+    ;;
+  fuzz)
+    build_fuzzers
+    run_fuzzers
     ;;
   bench)
     build

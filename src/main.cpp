@@ -18,6 +18,7 @@
 #include <glide_shim.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -101,12 +102,14 @@ bool open_window(int width, int height) {
   return true;
 }
 
+// "WxH", two decimal integers; a number too long for an int fails like any other bad text.
 bool parse_size(const std::string &text, int &width, int &height) {
-  char x = 0;
-  char rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || (x != 'x' && x != 'X')) {
-    return false;
-  }
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return false;
+  const char *begin = text.data(), *middle = begin + x, *end = begin + text.size();
+  const std::from_chars_result w = std::from_chars(begin, middle, width);
+  const std::from_chars_result h = std::from_chars(middle + 1, end, height);
+  if (w.ec != std::errc() || w.ptr != middle || h.ec != std::errc() || h.ptr != end) return false;
   return width >= 64 && height >= 64 && width <= 2048 && height <= 2048;
 }
 

@@ -25,7 +25,10 @@ class EglBackend final : public Backend {
   }
 
   bool open(std::string &error) {
-    library_ = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    // RTLD_NODELETE: the driver (Mesa and its LLVM) stays mapped after dlclose, so reopening a
+    // window does not load it again, and LeakSanitizer can still name the allocations the
+    // driver keeps (cmake/lsan.supp) instead of reporting frames in an unloaded module.
+    library_ = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
     if (library_ == nullptr) {
       error = std::string("cannot load libEGL.so.1 (install libegl1 libegl-mesa0): ") + dlerror();
       return false;

@@ -20,7 +20,10 @@ class OSMesaBackend final : public Backend {
   }
 
   bool open(std::string &error) {
-    library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+    // RTLD_NODELETE: the driver (Mesa and its LLVM) stays mapped after dlclose, so reopening a
+    // window does not load it again, and LeakSanitizer can still name the allocations the
+    // driver keeps (cmake/lsan.supp) instead of reporting frames in an unloaded module.
+    library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
     if (library_ == nullptr) {
       error = std::string("cannot load libOSMesa.so.8 (install libosmesa6): ") + dlerror();
       return false;

@@ -8,7 +8,9 @@ if(NOT status EQUAL 0)
   message(FATAL_ERROR "pkg-config does not know glide2x (PKG_CONFIG_PATH=${PKG_CONFIG_PATH})")
 endif()
 separate_arguments(flags UNIX_COMMAND "${flags}")
-execute_process(COMMAND cc -std=c99 -Wall -Wextra -Werror -pedantic ${SOURCE} -o ${OUTPUT_DIR}/hello ${flags}
+# EXTRA_FLAGS: compiler flags the library's build needs in its programs too (sanitizers).
+separate_arguments(extra_flags UNIX_COMMAND "${EXTRA_FLAGS}")
+execute_process(COMMAND cc -std=c99 -Wall -Wextra -Werror -pedantic ${extra_flags} ${SOURCE} -o ${OUTPUT_DIR}/hello ${flags}
   RESULT_VARIABLE status ERROR_VARIABLE errors)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "compiling ${SOURCE} against glide.h failed:\n${errors}")
