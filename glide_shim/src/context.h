@@ -139,8 +139,10 @@ struct LfbLockState {
   bool read_locked, write_locked;
   GrBuffer_t write_buffer;
   GrOriginLocation_t write_origin;
-  std::vector<FxU16> read_pixels, write_pixels;  // whole-screen 565 copies handed to the app
-  std::vector<FxU16> write_original;             // write_pixels as locked, to find what changed
+  GrLfbWriteMode_t write_mode;                   // the format of write_pixels
+  std::vector<FxU16> read_pixels;                // whole-screen 565 or depth words for a read lock
+  std::vector<std::uint8_t> write_pixels;        // whole-screen pixels in write_mode for a write lock
+  std::vector<std::uint8_t> write_original;      // write_pixels as locked, to find what changed
   GrAlpha_t constant_alpha = 0xFF;  // grLfbConstantAlpha: alpha of LFB writes that carry none
   FxU16 constant_depth = 0;         // grLfbConstantDepth: depth code of writes that carry none
 };

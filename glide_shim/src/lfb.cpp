@@ -71,6 +71,80 @@ std::uint16_t to_565(GrLfbSrcFmt_t format, const std::uint8_t *p) {
   }
 }
 
+// Bytes per pixel of an LFB write mode, and what its pixels carry.
+int write_mode_bytes(GrLfbWriteMode_t mode) {
+  return mode == GR_LFBWRITEMODE_888 || mode == GR_LFBWRITEMODE_8888 ||
+                 mode == GR_LFBWRITEMODE_565_DEPTH || mode == GR_LFBWRITEMODE_555_DEPTH ||
+                 mode == GR_LFBWRITEMODE_1555_DEPTH
+             ? 4
+             : 2;
+}
+bool mode_has_color(GrLfbWriteMode_t mode) { return mode != GR_LFBWRITEMODE_ZA16; }
+bool mode_has_depth(GrLfbWriteMode_t mode) {
+  return mode == GR_LFBWRITEMODE_ZA16 || mode == GR_LFBWRITEMODE_565_DEPTH ||
+         mode == GR_LFBWRITEMODE_555_DEPTH || mode == GR_LFBWRITEMODE_1555_DEPTH;
+}
+// The colour-only format of a mode's colour word (the LFB write modes share the source-format
+// values of grLfbWriteRegion).
+GrLfbSrcFmt_t color_format_of(GrLfbWriteMode_t mode) {
+  switch (mode) {
+    case GR_LFBWRITEMODE_565_DEPTH: return GR_LFB_SRC_FMT_565;
+    case GR_LFBWRITEMODE_555_DEPTH: return GR_LFB_SRC_FMT_555;
+    case GR_LFBWRITEMODE_1555_DEPTH: return GR_LFB_SRC_FMT_1555;
+    default: return mode;
+  }
+}
+
+// A 565 word in a write mode's colour layout, so that a pixel the program leaves alone reads
+// back as what the buffer holds (888/8888 widen by bit replication, 555 drops green's low bit).
+void encode_color(GrLfbSrcFmt_t format, std::uint16_t word, std::uint8_t *p) {
+  const unsigned r5 = word >> 11, g6 = (word >> 5) & 0x3F, b5 = word & 0x1F;
+  if (format == GR_LFB_SRC_FMT_555 || format == GR_LFB_SRC_FMT_1555) {
+    const auto packed = static_cast<std::uint16_t>((format == GR_LFB_SRC_FMT_1555 ? 0x8000u : 0u) |
+                                                   (r5 << 10) | ((g6 >> 1) << 5) | b5);
+    std::memcpy(p, &packed, 2);
+  } else if (format == GR_LFB_SRC_FMT_888 || format == GR_LFB_SRC_FMT_8888) {
+    const std::uint32_t packed = 0xFF000000u | (((r5 << 3) | (r5 >> 2)) << 16) |
+                                 (((g6 << 2) | (g6 >> 4)) << 8) | ((b5 << 3) | (b5 >> 2));
+    std::memcpy(p, &packed, 4);
+  } else {
+    std::memcpy(p, &word, 2);
+  }
+}
+
+// Flips the rows of a whole-screen block (lower-left origin locks).
+void flip_rows(std::vector<std::uint8_t> &bytes, std::size_t row_bytes, int height) {
+  for (int row = 0; row < height / 2; ++row) {
+    std::swap_ranges(bytes.begin() + static_cast<long>(row * row_bytes),
+                     bytes.begin() + static_cast<long>((row + 1) * row_bytes),
+                     bytes.begin() + static_cast<long>((height - 1 - row) * row_bytes));
+  }
+}
+
+// Writes the pixels of row `row` in [first, last) of a locked block back through the renderer.
+void write_span(GrBuffer_t buffer, GrLfbWriteMode_t mode, const std::uint8_t *row_bytes, int row,
+                int first, int last) {
+  auto &ctx = current();
+  const int bytes = write_mode_bytes(mode), n = last - first;
+  std::vector<std::uint16_t> words(static_cast<std::size_t>(n));
+  std::vector<float> depths(static_cast<std::size_t>(n));
+  const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
+  for (int i = 0; i < n; ++i) {
+    const std::uint8_t *p = row_bytes + static_cast<std::size_t>((first + i) * bytes);
+    if (mode_has_color(mode)) words[static_cast<std::size_t>(i)] = to_565(color_format_of(mode), p);
+    if (mode_has_depth(mode)) {
+      std::uint16_t code;
+      std::memcpy(&code, mode_has_color(mode) ? p + 2 : p, 2);
+      depths[static_cast<std::size_t>(i)] = static_cast<float>(glide_shim::gl_depth_from_code(code, w_buffer));
+    }
+  }
+  if (mode_has_color(mode)) {
+    ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), first, row, n, 1, words.data(),
+                              static_cast<std::size_t>(n) * 2);
+  }
+  if (mode_has_depth(mode)) ctx.renderer->write_depth(first, row, n, 1, depths.data());
+}
+
 }  // namespace
 
 extern "C" {
@@ -106,34 +180,63 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
     ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbLock: this lock type is already held");
     return FXFALSE;
   }
-  if (!reading && (pixelPipeline != FXFALSE || buffer == GR_BUFFER_AUXBUFFER ||
-                   (writeMode != GR_LFBWRITEMODE_565 && writeMode != GR_LFBWRITEMODE_ANY))) {
+  if (!reading && pixelPipeline != FXFALSE) {
     ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
-               "grLfbLock: write locks support only 565 colour without the pixel pipeline yet");
+               "grLfbLock: writes through the pixel pipeline are not implemented yet");
+    return FXFALSE;
+  }
+  // ANY means 565 colour, or ZA16 for the aux buffer; ZA16 writes depth whichever buffer is
+  // named, and colour modes need a colour buffer.
+  const GrLfbWriteMode_t mode = writeMode != GR_LFBWRITEMODE_ANY ? writeMode
+                                : buffer == GR_BUFFER_AUXBUFFER  ? GR_LFBWRITEMODE_ZA16
+                                                                 : GR_LFBWRITEMODE_565;
+  if (!reading && buffer == GR_BUFFER_AUXBUFFER && mode_has_color(mode)) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "grLfbLock: colour write modes lock GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER");
     return FXFALSE;
   }
   const int w = ctx.display.width, h = ctx.display.height;
-  std::vector<std::uint16_t> &pixels = reading ? ctx.lfb.read_pixels : ctx.lfb.write_pixels;
-  pixels.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  // A write lock starts from the buffer's contents, so pixels the program skips survive.
-  read_words(buffer, 0, 0, w, h, pixels.data(), static_cast<std::size_t>(w) * 2);
-  if (origin == GR_ORIGIN_LOWER_LEFT) {
-    for (int row = 0; row < h / 2; ++row) {
-      std::swap_ranges(pixels.begin() + row * w, pixels.begin() + (row + 1) * w,
-                       pixels.begin() + (h - 1 - row) * w);
-    }
-  }
+  const auto count = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   if (reading) {
+    std::vector<std::uint16_t> &pixels = ctx.lfb.read_pixels;
+    pixels.resize(count);
+    read_words(buffer, 0, 0, w, h, pixels.data(), static_cast<std::size_t>(w) * 2);
+    if (origin == GR_ORIGIN_LOWER_LEFT) {
+      for (int row = 0; row < h / 2; ++row) {
+        std::swap_ranges(pixels.begin() + row * w, pixels.begin() + (row + 1) * w,
+                         pixels.begin() + (h - 1 - row) * w);
+      }
+    }
     ctx.lfb.read_locked = true;
-  } else {
-    ctx.lfb.write_original = pixels;
-    ctx.lfb.write_locked = true;
-    ctx.lfb.write_buffer = buffer;
-    ctx.lfb.write_origin = origin;
+    info->lfbPtr = pixels.data();
+    info->strideInBytes = static_cast<FxU32>(w) * 2;
+    info->writeMode = buffer == GR_BUFFER_AUXBUFFER ? GR_LFBWRITEMODE_ZA16 : GR_LFBWRITEMODE_565;
+    info->origin = origin;
+    return FXTRUE;
   }
+  // A write lock starts from the buffers' contents in the lock's format, so pixels the program
+  // skips are recognised as unchanged at the unlock and survive as they are.
+  const int bytes = write_mode_bytes(mode);
+  std::vector<std::uint16_t> colors(mode_has_color(mode) ? count : 0), codes(mode_has_depth(mode) ? count : 0);
+  if (mode_has_color(mode)) read_words(buffer, 0, 0, w, h, colors.data(), static_cast<std::size_t>(w) * 2);
+  if (mode_has_depth(mode)) read_words(GR_BUFFER_AUXBUFFER, 0, 0, w, h, codes.data(), static_cast<std::size_t>(w) * 2);
+  std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels;
+  pixels.assign(count * static_cast<std::size_t>(bytes), 0);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint8_t *p = pixels.data() + i * static_cast<std::size_t>(bytes);
+    if (mode_has_color(mode)) encode_color(color_format_of(mode), colors[i], p);
+    if (mode_has_depth(mode)) std::memcpy(mode_has_color(mode) ? p + 2 : p, &codes[i], 2);
+  }
+  const std::size_t row_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(bytes);
+  if (origin == GR_ORIGIN_LOWER_LEFT) flip_rows(pixels, row_bytes, h);
+  ctx.lfb.write_original = pixels;
+  ctx.lfb.write_locked = true;
+  ctx.lfb.write_buffer = buffer;
+  ctx.lfb.write_origin = origin;
+  ctx.lfb.write_mode = mode;
   info->lfbPtr = pixels.data();
-  info->strideInBytes = static_cast<FxU32>(w) * 2;
-  info->writeMode = buffer == GR_BUFFER_AUXBUFFER ? GR_LFBWRITEMODE_ZA16 : GR_LFBWRITEMODE_565;
+  info->strideInBytes = static_cast<FxU32>(row_bytes);
+  info->writeMode = mode;
   info->origin = origin;
   return FXTRUE;
 }
@@ -148,27 +251,32 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
   }
   if (access == GR_LFB_WRITE_ONLY && ctx.lfb.write_locked && buffer == ctx.lfb.write_buffer) {
     const int w = ctx.display.width, h = ctx.display.height;
-    std::vector<std::uint16_t> &pixels = ctx.lfb.write_pixels;
+    const GrLfbWriteMode_t mode = ctx.lfb.write_mode;
+    const int bytes = write_mode_bytes(mode);
+    const std::size_t row_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(bytes);
+    std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels, &original = ctx.lfb.write_original;
     if (ctx.lfb.write_origin == GR_ORIGIN_LOWER_LEFT) {
-      for (int row = 0; row < h / 2; ++row) {
-        std::swap_ranges(pixels.begin() + row * w, pixels.begin() + (row + 1) * w,
-                         pixels.begin() + (h - 1 - row) * w);
-      }
+      flip_rows(pixels, row_bytes, h);
+      flip_rows(original, row_bytes, h);
     }
-    std::vector<std::uint16_t> &original = ctx.lfb.write_original;
-    if (ctx.lfb.write_origin == GR_ORIGIN_LOWER_LEFT) {
-      for (int row = 0; row < h / 2; ++row) {
-        std::swap_ranges(original.begin() + row * w, original.begin() + (row + 1) * w,
-                         original.begin() + (h - 1 - row) * w);
-      }
-    }
-    // Only rows the program changed go back, so drawing done while the lock was held survives.
+    // Only runs of pixels the program changed go back, so drawing done while the lock was held
+    // survives, and untouched depth keeps its full precision.
     for (int row = 0; row < h; ++row) {
-      const auto begin = static_cast<std::size_t>(row) * static_cast<std::size_t>(w);
-      if (!std::equal(pixels.begin() + static_cast<long>(begin), pixels.begin() + static_cast<long>(begin + w),
-                      original.begin() + static_cast<long>(begin))) {
-        ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), 0, row, w, 1,
-                                  pixels.data() + begin, static_cast<std::size_t>(w) * 2);
+      const std::uint8_t *line = pixels.data() + static_cast<std::size_t>(row) * row_bytes;
+      const std::uint8_t *was = original.data() + static_cast<std::size_t>(row) * row_bytes;
+      int x = 0;
+      while (x < w) {
+        auto changed = [&](int px) {
+          return std::memcmp(line + px * bytes, was + px * bytes, static_cast<std::size_t>(bytes)) != 0;
+        };
+        if (!changed(x)) {
+          ++x;
+          continue;
+        }
+        int end = x + 1;
+        while (end < w && changed(end)) ++end;
+        write_span(buffer, mode, line, row, x, end);
+        x = end;
       }
     }
     ctx.lfb.write_locked = false;

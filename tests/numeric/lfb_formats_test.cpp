@@ -1,6 +1,7 @@
 // grLfbWriteRegion's depth-carrying formats, exactly: ZA16 into the aux buffer, and the 32-bit
 // 565/555/1555 + depth formats (colour word low, depth code high) writing both buffers; read back
-// raw through grLfbReadRegion. Also grLfbConstantAlpha / grLfbConstantDepth and format errors.
+// raw through grLfbReadRegion. Write locks in every write mode and origin. Also
+// grLfbConstantAlpha / grLfbConstantDepth and format errors.
 #include "glide_window.h"
 
 #include "context.h"
@@ -68,6 +69,51 @@ TEST_F(LfbFormatsTest, ColourAndDepthFormatsWriteBothBuffers) {
     EXPECT_EQ(colour, want) << "format " << format;
     if (format == GR_LFB_SRC_FMT_565_DEPTH) {
       EXPECT_EQ(colour, colours);
+    }
+  }
+  expect_no_error();
+}
+
+// Write locks in every mode: the program writes a few pixels in the lock's format; only those
+// change, converted as grLfbWriteRegion converts the same source format.
+TEST_F(LfbFormatsTest, WriteLocksInEveryModeChangeOnlyThePixelsWritten) {
+  const std::vector<FxU16> background = random_words(21, kW * kH), depth = random_words(22, kW * kH);
+  struct Case {
+    GrLfbWriteMode_t mode;
+    int bytes;
+  };
+  for (const Case c : {Case{GR_LFBWRITEMODE_565, 2}, Case{GR_LFBWRITEMODE_555, 2}, Case{GR_LFBWRITEMODE_1555, 2},
+                       Case{GR_LFBWRITEMODE_888, 4}, Case{GR_LFBWRITEMODE_8888, 4},
+                       Case{GR_LFBWRITEMODE_565_DEPTH, 4}, Case{GR_LFBWRITEMODE_555_DEPTH, 4},
+                       Case{GR_LFBWRITEMODE_1555_DEPTH, 4}, Case{GR_LFBWRITEMODE_ZA16, 2}}) {
+    for (GrOriginLocation_t origin : {GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT}) {
+      const std::string what = "mode " + std::to_string(c.mode) + " origin " + std::to_string(origin);
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, const_cast<FxU16 *>(background.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kW, kH, kW * 2, const_cast<FxU16 *>(depth.data())));
+      GrLfbInfo_t info{};
+      info.size = sizeof info;
+      ASSERT_TRUE(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER, c.mode, origin, FXFALSE, &info))
+          << what << ": " << glideShimGetLastErrorMessage();
+      EXPECT_EQ(info.writeMode, c.mode) << what;
+      EXPECT_EQ(info.strideInBytes, static_cast<FxU32>(kW * c.bytes)) << what;
+      // Three pixels along row 5 (from the lock's origin) at x 10..12, as a source region would give them.
+      std::vector<std::uint8_t> source(static_cast<std::size_t>(3 * c.bytes));
+      for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<std::uint8_t>(0x35 + 29 * i);
+      std::memcpy(static_cast<std::uint8_t *>(info.lfbPtr) + 5 * info.strideInBytes + 10 * c.bytes, source.data(), source.size());
+      ASSERT_TRUE(grLfbUnlock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER)) << what;
+
+      // The same three pixels through grLfbWriteRegion into a copy, for the expected words.
+      const int row = origin == GR_ORIGIN_UPPER_LEFT ? 5 : kH - 1 - 5;
+      const std::vector<FxU16> got_color = read_buffer(GR_BUFFER_BACKBUFFER), got_depth = read_buffer(GR_BUFFER_AUXBUFFER);
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, const_cast<FxU16 *>(background.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kW, kH, kW * 2, const_cast<FxU16 *>(depth.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 10, static_cast<FxU32>(row), c.mode, 3, 1, 3 * c.bytes, source.data()));
+      EXPECT_EQ(got_color, read_buffer(GR_BUFFER_BACKBUFFER)) << what;
+      EXPECT_EQ(got_depth, read_buffer(GR_BUFFER_AUXBUFFER)) << what;
+      int changed = 0;
+      for (std::size_t i = 0; i < got_color.size(); ++i) changed += got_color[i] != background[i] || got_depth[i] != depth[i];
+      EXPECT_GE(changed, 1) << what;
+      EXPECT_LE(changed, 3) << what << ": only the written pixels change";
     }
   }
   expect_no_error();
