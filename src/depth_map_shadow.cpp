@@ -189,6 +189,10 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
   gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);
   const GLint filter = options_.depth_map_linear ? GL_LINEAR : GL_NEAREST;
   const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
+  if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
+    warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
+                       "-bit depth maps do not exist (16 or 24); using 24");
+  }
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light));
     maps_.push_back(0);
@@ -202,8 +206,10 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
     GLuint map = 0;
     gl_.glGenTextures(1, &map);
     gl_.glBindTexture(GL_TEXTURE_2D, map);
-    gl_.glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, side, side, 0, GL_DEPTH_COMPONENT,
-                     GL_UNSIGNED_INT, nullptr);
+    const GLint format =
+        options_.depth_map_bits == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
+    gl_.glTexImage2D(GL_TEXTURE_2D, 0, format, side, side, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+                     nullptr);
     gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);

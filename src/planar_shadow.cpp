@@ -279,9 +279,16 @@ namespace {
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
 // Each light gets its own band above the previous one's seals, so its covers pass them.
+// Over a receiver the scene pass clipped through the camera the cover's margin is 8 codes (w
+// times 1.0014): the scene pass drew that receiver as a fan of its clipped polygon, and on a
+// floor seen at a grazing angle from 0.3 m the hardware's iteration of 1/w across such a large
+// (guard-band) triangle strays from the plane of its vertices by up to 4 codes
+// (tests/hard_cases/eye_near_plane.json); an occluder closer to the receiver than 0.14% of its
+// distance may let such a cover show through.
 constexpr float kCoverCodes = 1.0f;
-constexpr float kSealCodes = 2.0f;
-constexpr float kLightBandCodes = kCoverCodes + kSealCodes;
+constexpr float kClippedCoverCodes = 8.0f;
+constexpr float kSealCodes = 2.0f * kClippedCoverCodes;
+constexpr float kLightBandCodes = kClippedCoverCodes + kSealCodes;
 
 float nearer(float oow, float codes) { return oow * std::exp2(codes / 4096.0f); }
 
@@ -322,12 +329,12 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
                        GR_BLEND_ZERO);
-  std::vector<ClipVertex> polygon, scratch;
-  std::vector<GrVertex> screen;
+  std::vector<ClipVertex> polygon, receiver_polygon, scratch;
+  std::vector<GrVertex> screen, receiver_screen;
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
     const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
-    const float cover = static_cast<float>(l) * kLightBandCodes + kCoverCodes;
+    const float band = static_cast<float>(l) * kLightBandCodes;
     for (const ShadowPolygons::Polygon &p : light.polygons) {
       polygon.clear();
       for (std::uint32_t i = 0; i < p.count; ++i) {
@@ -335,22 +342,40 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       }
       project_camera_polygon(frame, scene, polygon, scratch, screen);
       if (screen.size() < 3) continue;
-      // On a receiver triangle the scene pass drew unclipped, the depth is taken from that
-      // triangle's own snapped vertices, so cover and receiver differ by kCoverCodes and not by
-      // the rounding of two sets of vertices; through a camera-clipped one the polygon's own
-      // oow is within that rounding, well inside kCoverCodes but for grazing surfaces.
+      // The depth is taken from the receiver triangle's own snapped vertices as the scene pass
+      // drew them, so cover and receiver differ by kCoverCodes and not by the rounding of two
+      // sets of vertices (on a grazing surface that rounding is worth many codes). A triangle
+      // the scene pass clipped through the camera was drawn as a fan of its clipped polygon,
+      // all in one plane: its largest fan triangle gives that plane.
       const ProjectedObject &receiver = frame.objects[p.receiver];
       const glm::uvec3 &t = receiver.object->mesh.triangles[p.triangle];
       DepthPlane plane;
-      if ((receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0) {
-        if (!depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane)) {
-          continue;
+      bool has_plane = false;
+      const bool clipped =
+          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) != 0;
+      if (!clipped) {
+        has_plane =
+            depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane);
+      } else {
+        receiver_polygon.clear();
+        for (unsigned index : {t.x, t.y, t.z}) {
+          receiver_polygon.push_back({{}, receiver.world[index], {}});
         }
-        for (GrVertex &v : screen) {
-          v.x = snap(v.x), v.y = snap(v.y);
-          v.oow = static_cast<float>(plane.at(v.x, v.y));
+        project_camera_polygon(frame, scene, receiver_polygon, scratch, receiver_screen);
+        float largest = 0.0f;
+        for (std::size_t i = 2; i < receiver_screen.size(); ++i) {
+          const GrVertex &a = receiver_screen[0], &b = receiver_screen[i - 1],
+                         &c = receiver_screen[i];
+          const float area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+          if (area > largest && depth_plane(a, b, c, plane)) largest = area, has_plane = true;
         }
       }
+      if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
+      for (GrVertex &v : screen) {
+        v.x = snap(v.x), v.y = snap(v.y);
+        v.oow = static_cast<float>(plane.at(v.x, v.y));
+      }
+      const float cover = band + (clipped ? kClippedCoverCodes : kCoverCodes);
       for (GrVertex &v : screen) v.oow = nearer(v.oow, cover), v.a = alpha;
       draw_fan(screen);
       for (GrVertex &v : screen) v.oow = nearer(v.oow, kSealCodes), v.a = 0.0f;

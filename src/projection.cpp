@@ -30,9 +30,14 @@ glm::mat4 camera_view(const Camera &camera) {
 }
 
 glm::mat4 camera_projection(const Camera &camera, int width, int height) {
+  // Divided by the near distance, so clip w counts near-plane distances rather than metres:
+  // everything drawn has w >= 1, the range of Glide's W-buffer (it stores 1/w in [0, 1], so in
+  // metres all that is nearer than 1 m would share the nearest depth, and a scene scaled down
+  // would have no depth order at all). A homogeneous factor moves no projected point.
   return glm::perspective(glm::radians(camera.fov_degrees),
                           static_cast<float>(width) / static_cast<float>(height),
-                          camera.near_plane, camera.far_plane);
+                          camera.near_plane, camera.far_plane) /
+         camera.near_plane;
 }
 
 GrVertex to_screen(const glm::vec4 &clip, int width, int height) {

@@ -84,6 +84,7 @@ glm::mat4 infinite_projection(const Camera &camera, int width, int height) {
 struct Surface {
   const SceneObject *object = nullptr;
   std::vector<glm::vec3> world, normal;  // world space, per vertex
+  std::vector<glm::vec3> drawn;          // world minus FrameData::origin, what GL is given
   std::vector<glm::vec4> color;          // per vertex, rewritten by each pass
 };
 
@@ -94,14 +95,22 @@ struct Caster {
 };
 
 struct FrameData {
-  glm::mat4 view{1.0f}, projection{1.0f};  // world to eye, eye to clip
+  // GL draws world positions relative to the camera (world - origin, exact in float for points
+  // near the camera), so a scene far from the world's origin keeps its precision: a view matrix
+  // with a translation of 1e6 m would round every vertex to 1/16 m.
+  glm::vec3 origin{0.0f};                  // world, the camera's position
+  glm::mat4 view{1.0f}, projection{1.0f};  // camera-relative world to eye, eye to clip
   std::vector<Surface> surfaces;
   std::vector<Caster> casters;
   std::vector<std::string> open_casters;  // names of casters skipped
 };
 
 void prepare_surfaces(const Scene &scene, FrameData &frame) {
-  frame.view = camera_view(scene.camera);
+  frame.origin = scene.camera.position;
+  Camera at_origin = scene.camera;
+  at_origin.position -= frame.origin;
+  at_origin.target -= frame.origin;
+  frame.view = camera_view(at_origin);
   frame.projection = infinite_projection(scene.camera, scene.width, scene.height);
   for (const SceneObject &object : scene.objects) {
     Surface surface;
@@ -109,6 +118,7 @@ void prepare_surfaces(const Scene &scene, FrameData &frame) {
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(object.model_to_world)));
     for (std::size_t i = 0; i < object.mesh.positions.size(); ++i) {
       surface.world.emplace_back(object.model_to_world * glm::vec4(object.mesh.positions[i], 1.0f));
+      surface.drawn.push_back(surface.world.back() - frame.origin);
       surface.normal.push_back(glm::normalize(normal_matrix * object.mesh.normals[i]));
     }
     surface.color.resize(surface.world.size());
@@ -133,14 +143,15 @@ void prepare_casters(const Scene &scene, FrameData &frame) {
 }
 
 // Every caster's shadow volume from a point light at `light`, as outward-facing triangles in
-// homogeneous world coordinates: the silhouette extruded to infinity and, for z-fail, closed by
-// the light-facing triangles (front cap) and the back-facing ones sent to infinity (back cap).
-void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light, bool caps,
-                   std::vector<glm::vec4> &out) {
+// homogeneous world coordinates relative to `origin`: the silhouette extruded to infinity and,
+// for z-fail, closed by the light-facing triangles (front cap) and the back-facing ones sent to
+// infinity (back cap).
+void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light,
+                   const glm::vec3 &origin, bool caps, std::vector<glm::vec4> &out) {
   out.clear();
   for (const Caster &caster : casters) {
     const std::vector<bool> facing = light_facing(caster.mesh, caster.world, light);
-    const auto on = [&](glm::uint i) { return glm::vec4(caster.world[i], 1.0f); };
+    const auto on = [&](glm::uint i) { return glm::vec4(caster.world[i] - origin, 1.0f); };
     const auto beyond = [&](glm::uint i) { return glm::vec4(caster.world[i] - light, 0.0f); };
     for (const SilhouetteEdge &e : find_silhouette(caster.mesh, facing)) {
       // The side walks the edge against the light-facing triangle, as its neighbour on the
@@ -191,7 +202,7 @@ void count_volumes(const GlApi &gl, const std::vector<glm::vec4> &volumes, bool 
 void draw_surfaces(const GlApi &gl, const std::vector<Surface> &surfaces, bool receivers) {
   for (const Surface &surface : surfaces) {
     if (surface.object->receives_shadow != receivers || surface.world.empty()) continue;
-    gl.glVertexPointer(3, GL_FLOAT, 0, surface.world.data());
+    gl.glVertexPointer(3, GL_FLOAT, 0, surface.drawn.data());
     gl.glColorPointer(4, GL_FLOAT, 0, surface.color.data());
     const std::vector<glm::uvec3> &triangles = surface.object->mesh.triangles;
     gl.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangles.size() * 3), GL_UNSIGNED_INT,
@@ -260,7 +271,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
     for (const SpotLight &light : scene.lights) {
       if (light.is_projector()) continue;  // slides cast no shadows
       const bool z_fail = uses_z_fail(scene, light);  // 2
-      build_volumes(frame.casters, light.position, z_fail, volumes);
+      build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
       finish_step(1);
       draw_lit_pass(light, frame);  // 3
@@ -287,7 +298,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
     for (const SpotLight &light : scene.lights) {
       if (light.is_projector()) continue;  // slides cast no shadows
       const bool z_fail = uses_z_fail(scene, light);
-      build_volumes(frame.casters, light.position, z_fail, volumes);
+      build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
       // White where this light would reach the visible surface (alpha > 0: what it adds to a
       // white surface, so cone and facing as in shade_vertex) but the count is not 0.
@@ -421,6 +432,11 @@ EdgeMesh build_edge_mesh(const Mesh &mesh) {
     const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
     // Two corners welded together: no area, and its edges (a->a, a->b, b->a) cancel out.
     if (w.x == w.y || w.y == w.z || w.z == w.x) continue;
+    // Three distinct corners on one line: no area either, so it bounds nothing; its edges
+    // (a->m, m->b, b->a) would otherwise make a closed surface look open.
+    const glm::vec3 &a = result.positions[w.x], &b = result.positions[w.y],
+                    &c = result.positions[w.z];
+    if (glm::cross(b - a, c - a) == glm::vec3(0.0f)) continue;
     const auto index = static_cast<glm::uint>(result.triangles.size());
     result.triangles.push_back(w);
     for (const glm::uvec3 &edge : {glm::uvec3(w.x, w.y, index), glm::uvec3(w.y, w.z, index),

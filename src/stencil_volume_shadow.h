@@ -18,6 +18,7 @@ namespace gs {
 struct EdgeMesh {
   std::vector<glm::vec3> positions;   // model space, each distinct position once
   std::vector<glm::uvec3> triangles;  // into `positions`, CCW from outside, three distinct corners
+                                      // not on one line
   // Every triangle's three edges (from, to, triangle), sorted so that the uses of one undirected
   // edge are adjacent.
   std::vector<glm::uvec3> edges;

@@ -35,6 +35,7 @@ struct TechniqueOptions {
   float depth_bias_slope = 1.0f;     // depth map: glPolygonOffset factor
   float depth_bias_units = 4.0f;     // depth map: glPolygonOffset units
   bool depth_map_linear = true;      // depth map: percentage-closer (GL_LINEAR) or nearest
+  int depth_map_bits = 24;           // depth map: 16 or 24-bit depth texture
   enum class VolumeMode { Automatic, ZPass, ZFail } volume_mode = VolumeMode::Automatic;
 };
 

@@ -1,0 +1,210 @@
+// Error against the parameter of issue #6's hard cases (scenes: tests/hard_cases), every
+// technique measured against the ray-cast truth with the engine of `glideshadows bench`:
+//   tilt         the light 0..89 degrees from a lone plane's normal: acne (any shadow is wrong),
+//                the depth map at several biases and 16 or 24 bits;
+//   contact      a box resting on the floor: peter-panning against the depth map's bias;
+//   translation  box_over_floor moved 1e0..1e6 m along x and z;
+//   scale        the same scene scaled 1e-3..1e3;
+//   shadow size  map side 1..1024 (projected and depth map);
+//   screen size  1x1 .. 1024x768.
+// Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
+//   hard_case_sweeps [tilt|contact|translation|scale|shadow-size|screen-size]...  (default: all)
+#include "hard_case_scenes.h"
+
+#include "speed_error.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Column {
+  std::string label;  // the parameter's value as the table shows it
+  gs::BenchFrame frame;
+};
+
+gs::BenchConfiguration plain(const std::string &technique) {
+  gs::BenchConfiguration c;
+  c.technique = technique;
+  return c;
+}
+
+gs::BenchConfiguration depth_map(float slope, float units) {
+  gs::BenchConfiguration c = plain("depth-map");
+  c.options.depth_bias_slope = slope;
+  c.options.depth_bias_units = units;
+  char settings[64];
+  std::snprintf(settings, sizeof settings, "bias %g/%g", static_cast<double>(slope),
+                static_cast<double>(units));
+  c.settings = settings;
+  return c;
+}
+
+std::vector<gs::BenchConfiguration> every_technique() {
+  return {plain("projected"), plain("projected-chroma"), plain("planar"), plain("depth-map"),
+          plain("stencil-volume")};
+}
+
+// Measures every configuration on every column and prints `metric` of each row as a table:
+// one line per configuration, one column per parameter value.
+bool sweep(const std::string &title, const std::string &parameter,
+           const std::vector<Column> &columns,
+           const std::vector<gs::BenchConfiguration> &configurations) {
+  std::vector<gs::BenchFrame> frames;
+  for (const Column &column : columns) frames.push_back(column.frame);
+  std::vector<gs::BenchRow> rows;
+  std::string error;
+  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
+                     error)) {
+    std::fprintf(stderr, "hard_case_sweeps: %s: %s\n", title.c_str(), error.c_str());
+    return false;
+  }
+  std::printf("\n### %s\n\nmisclassified %% (false shadow interior %% / false light interior %%)"
+              "\n\n| technique | %s |",
+              title.c_str(), parameter.c_str());
+  for (std::size_t c = 1; c < columns.size(); ++c) std::printf(" |");
+  std::printf("\n|---|");
+  for (std::size_t c = 0; c < columns.size(); ++c) std::printf("---|");
+  std::printf("\n| |");
+  for (const Column &column : columns) std::printf(" %s |", column.label.c_str());
+  std::printf("\n");
+  // run_bench's rows: frame-major, configurations in order.
+  for (std::size_t k = 0; k < configurations.size(); ++k) {
+    const std::string &settings = configurations[k].settings;
+    std::printf("| %s%s%s |", configurations[k].technique.c_str(), settings.empty() ? "" : " ",
+                settings.c_str());
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const gs::MaskErrors &e = rows[c * configurations.size() + k].errors;
+      std::printf(" %.2f (%.2f/%.2f) |", e.misclassified * 100.0, e.false_shadow_interior * 100.0,
+                  e.false_light_interior * 100.0);
+    }
+    std::printf("\n");
+  }
+  std::fflush(stdout);
+  return true;
+}
+
+bool tilt() {
+  std::vector<Column> columns;
+  for (int degrees : {0, 30, 45, 60, 70, 75, 80, 85, 87, 89}) {
+    columns.push_back({std::to_string(degrees),
+                       {"tilt " + std::to_string(degrees), hard_cases::grazing_plane(
+                                                              static_cast<float>(degrees))}});
+  }
+  std::vector<gs::BenchConfiguration> configurations = {plain("projected"), plain("planar"),
+                                                        plain("stencil-volume")};
+  for (int bits : {24, 16}) {
+    for (const auto &bias : std::vector<std::pair<float, float>>{
+             {0, 0}, {0, 4}, {0, 64}, {0.25f, 4}, {0.5f, 4}, {1, 0}, {1, 4}, {4, 4}}) {
+      gs::BenchConfiguration c = depth_map(bias.first, bias.second);
+      c.options.depth_map_bits = bits;
+      c.settings += " " + std::to_string(bits) + "-bit";
+      configurations.push_back(c);
+    }
+  }
+  return sweep("Acne against the light's angle from a lone plane's normal (grazing_plane.json)",
+               "degrees", columns, configurations);
+}
+
+// Peter-panning: the box resting on the floor under a 45-degree light, the depth map's bias
+// swept up (false light is the floor lit under the box's edge).
+bool contact() {
+  std::vector<gs::BenchConfiguration> configurations = {plain("projected"), plain("planar"),
+                                                        plain("stencil-volume")};
+  for (int bits : {24, 16}) {
+    for (const auto &bias : std::vector<std::pair<float, float>>{
+             {1, 4}, {4, 4}, {16, 4}, {1, 1024}, {1, 16384}, {64, 4}}) {
+      gs::BenchConfiguration c = depth_map(bias.first, bias.second);
+      c.options.depth_map_bits = bits;
+      c.settings += " " + std::to_string(bits) + "-bit";
+      configurations.push_back(c);
+    }
+  }
+  return sweep("Peter-panning against the depth map's bias (box_resting.json)", "scene",
+               {{"box_resting", {"box_resting", hard_cases::load("box_resting.json")}}},
+               configurations);
+}
+
+bool translation() {
+  std::vector<Column> columns;
+  for (double offset : {0.0, 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6}) {
+    gs::Scene scene = hard_cases::load("box_over_floor.json");
+    hard_cases::move_scene(scene, glm::dvec3(offset, 0.0, offset), 1.0);
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", offset);
+    columns.push_back({label, {std::string("offset ") + label, scene}});
+  }
+  return sweep("Error against the scene's distance from the origin (box_over_floor.json moved "
+               "along x and z)",
+               "metres", columns, every_technique());
+}
+
+bool scale() {
+  std::vector<Column> columns;
+  for (double factor : {1e-3, 1e-2, 1e-1, 1.0, 1e1, 1e2, 1e3}) {
+    gs::Scene scene = hard_cases::load("box_over_floor.json");
+    hard_cases::move_scene(scene, glm::dvec3(0.0), factor);
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", factor);
+    columns.push_back({label, {std::string("scale ") + label, scene}});
+  }
+  return sweep("Error against the scene's scale (box_over_floor.json)", "factor", columns,
+               every_technique());
+}
+
+bool shadow_size() {
+  const gs::Scene scene = hard_cases::load("box_over_floor.json");
+  std::vector<gs::BenchConfiguration> configurations;
+  for (const char *name : {"projected", "depth-map"}) {
+    for (int size : {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024}) {
+      gs::BenchConfiguration c = plain(name);
+      c.options.projected.size = size;
+      c.settings = "size " + std::to_string(size);
+      configurations.push_back(c);
+    }
+  }
+  return sweep("Error against the shadow map's side (box_over_floor.json, 200x150)", "scene",
+               {{"box_over_floor", {"box_over_floor", scene}}}, configurations);
+}
+
+bool screen_size() {
+  std::vector<Column> columns;
+  for (glm::ivec2 size : {glm::ivec2(1, 1), glm::ivec2(4, 3), glm::ivec2(16, 12),
+                          glm::ivec2(64, 48), glm::ivec2(200, 150), glm::ivec2(640, 480),
+                          glm::ivec2(1024, 768)}) {
+    gs::Scene scene = hard_cases::load("box_over_floor.json");
+    scene.width = size.x, scene.height = size.y;
+    const std::string label = std::to_string(size.x) + "x" + std::to_string(size.y);
+    columns.push_back({label, {"screen " + label, scene}});
+  }
+  return sweep("Error against the screen size (box_over_floor.json, maps 128)", "pixels", columns,
+               every_technique());
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  std::vector<std::string> sweeps(argv + 1, argv + argc);
+  if (sweeps.empty()) {
+    sweeps = {"tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
+  }
+  for (const std::string &name : sweeps) {
+    bool ok = false;
+    if (name == "tilt") ok = tilt();
+    else if (name == "contact") ok = contact();
+    else if (name == "translation") ok = translation();
+    else if (name == "scale") ok = scale();
+    else if (name == "shadow-size") ok = shadow_size();
+    else if (name == "screen-size") ok = screen_size();
+    else {
+      std::fprintf(stderr,
+                   "hard_case_sweeps: unknown sweep '%s' (tilt, contact, translation, scale, "
+                   "shadow-size, screen-size)\n",
+                   name.c_str());
+      return 2;
+    }
+    if (!ok) return 1;
+  }
+  return 0;
+}
