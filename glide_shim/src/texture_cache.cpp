@@ -217,16 +217,24 @@ BoundTexture TextureCache::bind(const GlFunctions &gl, const TmuState &tmu) {
       const LevelSize size = level_size(lod, source.aspect);
       const int count = size.width * size.height;
       // Addresses wrap inside TMU memory as the hardware's do (a multibase base can point
-      // anywhere); the usual case is one straight copy.
-      level_bytes_.resize(static_cast<std::size_t>(count * bytes_per_texel(source.format)));
-      for (std::size_t k = 0; k < level_bytes_.size(); ++k) {
-        level_bytes_[k] = tmu.memory[static_cast<std::size_t>(
-            (static_cast<std::uint64_t>(key.address[lod]) + k) & (kTmuMemoryBytes - 1))];
+      // anywhere); the usual level lies inside it and is read in place.
+      const auto bytes = static_cast<std::size_t>(count * bytes_per_texel(source.format));
+      const std::int64_t address = key.address[lod];
+      const std::uint8_t *raw = nullptr;
+      if (address >= 0 && address + static_cast<std::int64_t>(bytes) <= kTmuMemoryBytes) {
+        raw = tmu.memory.data() + address;
+      } else {
+        level_bytes_.resize(bytes);
+        for (std::size_t k = 0; k < bytes; ++k) {
+          level_bytes_[k] = tmu.memory[static_cast<std::size_t>(
+              (static_cast<std::uint64_t>(address) + k) & (kTmuMemoryBytes - 1))];
+        }
+        raw = level_bytes_.data();
       }
-      const void *pixels = level_bytes_.data();
+      const void *pixels = raw;
       if (!native) {
         decoded_.resize(static_cast<std::size_t>(count) * 4);
-        decode_texels(source.format, tmu.tables, level_bytes_.data(), count, decoded_.data());
+        decode_texels(source.format, tmu.tables, raw, count, decoded_.data());
         pixels = decoded_.data();
       }
       gl.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(entry->bound.levels[lod][0]),

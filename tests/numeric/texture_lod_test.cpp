@@ -219,6 +219,27 @@ TEST_F(TextureLodTest, MagnificationAndMinificationFiltersFollowTheLod) {
   expect_no_error();
 }
 
+TEST_F(TextureLodTest, LodFractionFactorIsTheFractionOfTheLod) {
+  // Six 256-units per pixel: LOD log2(6) = 2.585, 661/256 in 8.8, fraction 149. The TMU's
+  // BLEND_LOCAL with LOD_FRACTION on a white texel: ((0 - 255) * 150 >> 8) + 255 = 105.
+  std::vector<FxU16> texels(256 * 256 * 2, 0xFFFF);
+  GrTexInfo info{GR_LOD_1, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565, texels.data()};
+  grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  grTexSource(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+  grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
+  grTexCombine(GR_TMU0, GR_COMBINE_FUNCTION_BLEND_LOCAL, GR_COMBINE_FACTOR_LOD_FRACTION,
+               GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, FXFALSE, FXFALSE);
+  draw(Plane{6.0, 6.0, 1.0, 1.0});
+  const FxU16 want = static_cast<FxU16>((105 >> 3) << 11 | (105 >> 2) << 5 | (105 >> 3));
+  for (FxU16 word : read_buffer()) ASSERT_EQ(word, want);
+  // Without mip-mapping the LOD is lodmin, a whole number: fraction 0, (0 - 255) * 1 >> 8 + 255.
+  grTexMipMapMode(GR_TMU0, GR_MIPMAP_DISABLE, FXFALSE);
+  draw(Plane{6.0, 6.0, 1.0, 1.0});
+  const FxU16 almost_white = static_cast<FxU16>((254 >> 3) << 11 | (254 >> 2) << 5 | (254 >> 3));
+  for (FxU16 word : read_buffer()) ASSERT_EQ(word, almost_white);
+  expect_no_error();
+}
+
 TEST_F(TextureLodTest, OutOfRangeLodsAndBiasAreRefusedAndChangeNothing) {
   load_chain(GR_LOD_256, GR_LOD_1);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
