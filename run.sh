@@ -6,7 +6,7 @@
 #   ./run.sh bench   build, then run the benchmark programs
 #   ./run.sh sanitize  build in build-asan/ with ASan+UBSan, then run the whole test suite there
 #   ./run.sh fuzz    build the libFuzzer targets in build-fuzz/ (clang), run each for
-#                    FUZZ_SECONDS (default 30) from fuzz/corpus/; a finding fails the run
+#                    FUZZ_SECONDS (default 60) from fuzz/corpus/; a finding fails the run
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -86,7 +86,7 @@ build_fuzzers() {
 # Each target starts from the checked-in seeds (read only) and writes what it finds new to
 # build-fuzz/corpus/<target>/; a crashing input is saved in build-fuzz/artifacts/.
 run_fuzzers() {
-  local seconds=${FUZZ_SECONDS:-30}
+  local seconds=${FUZZ_SECONDS:-60}
   local failed=()
   export_sanitizer_options
   mkdir -p build-fuzz/artifacts

@@ -161,7 +161,9 @@ void form_exact_spotlight(const Scene &scene, const FrameGeometry &frame, const 
   // The attenuation as a 256 x 32 texture whose s runs over the frame's light-space depths; s
   // is affine in the world, so the TMU's perspective-correct iteration (by the eye's w) gives
   // each pixel its own depth, hence attenuation(depth) per pixel up to the texel spacing.
-  const auto [nearest, farthest] = depth_range(frame, light);
+  // Plain variables, not a structured binding: C++17 lambdas cannot capture bindings (clang).
+  const std::pair<float, float> range = depth_range(frame, light);
+  const float nearest = range.first, farthest = range.second;
   std::vector<std::uint8_t> ramp = attenuation_texels(light, nearest, farthest, kAttenuationWidth);
   std::vector<std::uint8_t> texels(ramp.size() * kAttenuationRows);
   for (int row = 0; row < kAttenuationRows; ++row)
