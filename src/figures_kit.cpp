@@ -67,21 +67,6 @@ FigureImage to_image(const Words &words, float gamma) {
   return image;
 }
 
-FigureImage crop(const FigureImage &image, int x, int y, int width, int height) {
-  FigureImage out = filled(width, height, 0, 0, 0);
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) {
-      const int sx = x + col, sy = y + row;
-      if (sx < 0 || sy < 0 || sx >= image.width || sy >= image.height) continue;
-      for (int c = 0; c < 3; ++c) {
-        out.rgb[static_cast<std::size_t>((row * width + col) * 3 + c)] =
-            image.rgb[static_cast<std::size_t>((sy * image.width + sx) * 3 + c)];
-      }
-    }
-  }
-  return out;
-}
-
 FigureImage magnified(const FigureImage &image, int factor) {
   FigureImage out = filled(image.width * factor, image.height * factor, 0, 0, 0);
   for (int y = 0; y < out.height; ++y) {

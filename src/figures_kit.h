@@ -37,7 +37,6 @@ Mask non_zero(const Words &words);
 // 565 words as the monitor shows them: widened by bit replication, then through the gamma
 // table Glide's scan-out applies (the shim's CLUT: 32 entries, interpolated in eighths).
 FigureImage to_image(const Words &words, float gamma);
-FigureImage crop(const FigureImage &image, int x, int y, int width, int height);
 FigureImage magnified(const FigureImage &image, int factor);  // nearest neighbour
 FigureImage filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b);
 

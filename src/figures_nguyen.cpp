@@ -206,6 +206,57 @@ void figure_nguyen_5(Figure &figure) {
              seen_from_light, caster, seen_from_camera)));
 }
 
+namespace {
+
+constexpr FxU16 kUnflaggedGrey = 0x4208;  // 565 of (64, 64, 64)
+
+// The receivers' triangles drawn from the light's view (step 1's camera), W-buffered: those
+// Listing 2 flags (facing the light, not wholly outside its view) each in its own flat colour,
+// those facing away in grey; triangles wholly outside the view are not drawn.
+Words flagged_triangles(const Scene &scene) {
+  const LightView view = fit_light_view(scene, kFighter, 0, {});
+  const glm::mat4 light_clip = view.projection * view.view;
+  const glm::vec3 light = scene.lights[0].position;
+  set_scene_state();
+  grCullMode(GR_CULL_DISABLE);
+  grClipWindow(0, 0, static_cast<FxU32>(view.size), static_cast<FxU32>(view.size));
+  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
+  std::uint32_t hash = 2166136261u;
+  for (std::size_t r = 0; r < scene.objects.size(); ++r) {
+    if (r == kFighter) continue;
+    const SceneObject &object = scene.objects[r];
+    for (const glm::uvec3 &t : object.mesh.triangles) {
+      glm::vec3 world[3];
+      glm::vec4 clip[3];
+      unsigned outside = ~0u;
+      const unsigned index[3] = {t.x, t.y, t.z};
+      for (int k = 0; k < 3; ++k) {
+        world[k] = glm::vec3(object.model_to_world * glm::vec4(object.mesh.positions[index[k]], 1.0f));
+        clip[k] = light_clip * glm::vec4(world[k], 1.0f);
+        const glm::vec4 &p = clip[k];
+        outside &= (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 | (p.w <= 0.0f) << 4;
+      }
+      if (outside != 0) continue;
+      const bool facing = glm::dot(glm::cross(world[1] - world[0], world[2] - world[0]), light - world[0]) > 0.0f;
+      hash = (hash ^ 0x9E3779B9u) * 16777619u;
+      GrVertex v[3];
+      for (int k = 0; k < 3; ++k) {
+        v[k] = to_screen(clip[k], view.size, view.size);
+        v[k].r = facing ? static_cast<float>(96 + (hash % 160)) : 64.0f;
+        v[k].g = facing ? static_cast<float>(96 + ((hash >> 8) % 160)) : 64.0f;
+        v[k].b = facing ? static_cast<float>(96 + ((hash >> 16) % 160)) : 64.0f;
+      }
+      guDrawTriangleWithClip(&v[0], &v[1], &v[2]);
+    }
+  }
+  const Words words = figures::read_back(view.size, view.size);
+  grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
+  set_scene_state();
+  return words;
+}
+
+}  // namespace
+
 void figure_nguyen_6(Figure &figure) {
   const Scene scene = figures::article_scene();
   Scene receivers = from_the_light(scene);
@@ -215,12 +266,25 @@ void figure_nguyen_6(Figure &figure) {
   Mask receiver_pixels = figures::coverage(receivers, kFloor);
   const Mask step = figures::coverage(receivers, kStep);
   for (std::size_t i = 0; i < receiver_pixels.size(); ++i) receiver_pixels[i] |= step[i];
+  const Words flagged = flagged_triangles(scene);
+  long on_flagged = 0;
+  for (std::size_t i = 0; i < receiver_pixels.size(); ++i) {
+    on_flagged += receiver_pixels[i] && flagged.data[i] != 0 && flagged.data[i] != kUnflaggedGrey;
+  }
   const Steps steps = run_steps(scene, {});
   const Mask shadow = alpha_set(steps.light_words);
   const long landing = count_both(shadow, receiver_pixels), texels = count(shadow);
-  figure.image = figures::compose({{figures::to_image(frame, kListing4Gamma), "RECEIVERS FROM THE LIGHT"}});
-  figure.shows = "The floor and the step (the receivers) rendered from the light's view without "
-                 "the caster: the light-space x, y that step 3 turns into (s, t).";
+  const long seen = count(receiver_pixels);
+  figure.image = figures::compose({{figures::to_image(frame, kListing4Gamma), "RECEIVERS FROM THE LIGHT"},
+                                   {figures::to_image(flagged, 1.0f), "TRIANGLES LISTING 2 FLAGS"}});
+  figure.shows = "Left: the floor and the step (the receivers) rendered from the light's view "
+                 "without the caster: the light-space x, y that step 3 turns into (s, t). Right: "
+                 "their triangles in that view, each triangle Listing 2 flags (facing the light, "
+                 "not wholly outside its view) in its own flat colour, those facing away in grey.";
+  figure.checks.push_back(check(
+      "every receiver pixel the light sees lies on a triangle Listing 2 flags",
+      seen > 10000 && on_flagged == seen,
+      format("%ld of %ld receiver pixels on flagged triangles", on_flagged, seen)));
   figure.checks.push_back(check(
       "every texel of the caster's silhouette lies over a receiver in the light's view (the shadow has a surface to land on)",
       texels > 1000 && landing * 100 >= texels * 99,
@@ -533,7 +597,7 @@ void figure_nguyen_14(Figure &figure) {
 
 void figure_nguyen_15(Figure &figure) {
   Scene scene = figures::article_scene();
-  // Close on the shadow of the fighter's head and arms on the floor, with a coarse texture.
+  // Close on the shadow of the fighter's arms on the step, with a coarse texture.
   scene.camera.position = glm::vec3(1.6f, 2.2f, 0.6f);
   scene.camera.target = glm::vec3(1.7f, 0.0f, -0.9f);
   scene.camera.fov_degrees = 35.0f;
@@ -555,7 +619,7 @@ void figure_nguyen_15(Figure &figure) {
   const long partial_alpha = partial(filtered), partial_chroma = partial(keyed);
   figure.image = figures::compose({{figures::to_image(keyed, kListing4Gamma), "CHROMA KEY"},
                                    {figures::to_image(filtered, kListing4Gamma), "ALPHA, BILINEAR"}});
-  figure.shows = "A close view of the shadow on the floor from a 64x64 texture. Left: the RGB 565 "
+  figure.shows = "A close view of the shadow on the step from a 64x64 texture. Left: the RGB 565 "
                  "texture with the background chroma-keyed away, point sampled: each pixel is "
                  "shadowed or not. Right: the ARGB_4444 alpha mask, bilinear: the edge ramps.";
   figure.checks.push_back(check(
