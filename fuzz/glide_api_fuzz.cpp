@@ -6,8 +6,10 @@
 //   - an error is never reported without a message, and the callback saw the same message;
 //   - the open window's groups stay in range (clip inside the target, TMU memory whole, LFB
 //     copies the screen's size);
-//   - round trips: 565 words written with grLfbWriteRegion read back unchanged, and
-//     grTexTextureMemRequired agrees with grTexCalcMemRequired for the same texture.
+//   - round trips: 565 words written with grLfbWriteRegion read back unchanged,
+//     grTexTextureMemRequired agrees with grTexCalcMemRequired for the same texture, restoring
+//     grGlideGetState's block changes nothing, and grSstScreenWidth/Height give the window's size;
+//   - a polygon with a vertex count far beyond its array (over 65,536) is refused unread.
 // Any violation aborts, which libFuzzer reports as a crash with the input that caused it.
 #include "context.h"
 
@@ -271,6 +273,8 @@ void check_open_window(const GlideContext &ctx, const char *call) {
       (ctx.lfb.write_pixels.empty() || ctx.lfb.write_pixels.size() % (width * height) != 0 ||
        ctx.lfb.write_original.size() != ctx.lfb.write_pixels.size()))
     violated(call, "the write lock's copy is not the screen's size");
+  if (grSstScreenWidth() != width || grSstScreenHeight() != height)
+    violated(call, "grSstScreenWidth/Height disagree with the window");
   if (grTexMinAddress(GR_TMU0) > grTexMaxAddress(GR_TMU0) ||
       grTexMaxAddress(GR_TMU0) >= glide_shim::kTmuMemoryBytes)
     violated(call, "the TMU's address range is wrong");
@@ -348,8 +352,54 @@ void texture_memory_round_trip(FuzzedDataProvider &in) {
     violated("grTexTextureMemRequired", "disagrees with grTexCalcMemRequired or the chain's size");
 }
 
+// grGlideGetState then grGlideSetState of what it returned changes nothing, and a second
+// grGlideGetState returns the same bytes.
+void state_round_trip() {
+  const GlideContext &ctx = glide_shim::current();
+  if (!ctx.display.open || ctx.plain_gl) return;
+  GrState first{}, second{};
+  checked("grGlideGetState", [&] { grGlideGetState(&first); });
+  Snapshot before;
+  before.take(ctx);
+  checked("grGlideSetState", [&] { grGlideSetState(&first); });
+  if (const char *group = before.differs(ctx))
+    violated("grGlideSetState", (std::string("restoring the saved state changed ") + group).c_str());
+  checked("grGlideGetState", [&] { grGlideGetState(&second); });
+  if (std::memcmp(&first, &second, sizeof first) != 0)
+    violated("grGlideGetState", "the state saved again differs from the state restored");
+}
+
+// A polygon of `count` vertices from an array of exactly that many (indices inside it, or -1
+// that the shim must refuse), or a count far beyond the array that the shim must refuse unread.
+void polygon(FuzzedDataProvider &in, float span) {
+  const bool absurd = in.ConsumeIntegralInRange(0, 15) == 0;
+  const int count = in.ConsumeIntegralInRange(0, 8);
+  std::vector<GrVertex> vertices;
+  for (int i = 0; i < count; ++i) vertices.push_back(vertex(in, span));
+  std::vector<int> indices;
+  for (int i = 0; i < count; ++i) indices.push_back(in.ConsumeIntegralInRange(-1, count - 1));
+  const int nverts = absurd ? in.ConsumeIntegralInRange(65537, std::numeric_limits<int>::max()) : count;
+  const GrVertex *list = vertices.empty() ? nullptr : vertices.data();
+  const int *ilist = indices.empty() ? nullptr : indices.data();
+  switch (in.ConsumeIntegralInRange(0, 6)) {
+    case 0: checked("grDrawPolygonVertexList", [&] { grDrawPolygonVertexList(nverts, list); }); break;
+    case 1: checked("grDrawPolygon", [&] { grDrawPolygon(nverts, ilist, list); }); break;
+    case 2: checked("grDrawPlanarPolygonVertexList", [&] { grDrawPlanarPolygonVertexList(nverts, list); }); break;
+    case 3: checked("grDrawPlanarPolygon", [&] { grDrawPlanarPolygon(nverts, ilist, list); }); break;
+    case 4: checked("grAADrawPolygonVertexList", [&] { grAADrawPolygonVertexList(nverts, list); }); break;
+    case 5: checked("grAADrawPolygon", [&] { grAADrawPolygon(nverts, ilist, list); }); break;
+    default:
+      checked("guDrawPolygonVertexListWithClip", [&] { guDrawPolygonVertexListWithClip(nverts, list); });
+      break;
+  }
+  const GlideShimError error = glideShimGetLastError();
+  if (absurd && glide_shim::current().display.open && !glide_shim::current().plain_gl &&
+      error != GLIDESHIM_ERR_OUT_OF_RANGE && error != GLIDESHIM_ERR_NULL_POINTER)
+    violated("a polygon call", "an absurd vertex count was not refused");
+}
+
 void one_call(FuzzedDataProvider &in, float span) {
-  switch (in.ConsumeIntegralInRange(0, 47)) {
+  switch (in.ConsumeIntegralInRange(0, 55)) {
     case 0: {
       const int f = enum_value(in, 0, 0x10), k = enum_value(in, 0, 0xd);
       const int l = enum_value(in, 0, 2), o = enum_value(in, 0, 2);
@@ -660,6 +710,51 @@ void one_call(FuzzedDataProvider &in, float span) {
       break;
     case 46:
       checked("grSstIdle", [] { grSstIdle(); });
+      break;
+    case 47:
+    case 48:
+      polygon(in, span);
+      break;
+    case 49: {
+      const GrVertex a = vertex(in, span), b = vertex(in, span), c = vertex(in, span);
+      const FxBool ab = boolean(in), bc = boolean(in), ca = boolean(in);
+      checked("grAADrawTriangle", [&] { grAADrawTriangle(&a, &b, &c, ab, bc, ca); });
+      break;
+    }
+    case 50: {
+      const int mode = in.ConsumeBool() ? enum_value(in, GR_FOG_DISABLE, GR_FOG_WITH_ITERATED_Z)
+                                        : in.ConsumeIntegral<int>();
+      checked("grFogMode", [&] { grFogMode(mode); });
+      const GrColor_t color = in.ConsumeIntegral<GrColor_t>();
+      checked("grFogColorValue", [&] { grFogColorValue(color); });
+      break;
+    }
+    case 51: {
+      std::vector<GrFog_t> table = in.ConsumeBytes<GrFog_t>(GR_FOG_TABLE_SIZE);
+      table.resize(GR_FOG_TABLE_SIZE);
+      checked("grFogTable", [&] { grFogTable(table.data()); });
+      break;
+    }
+    case 52: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const GrTexTable_t type = enum_value(in, GR_TEXTABLE_NCC0, GR_TEXTABLE_PALETTE);
+      GuTexTable table{};  // the larger of a palette and an NCC table
+      const std::vector<std::uint8_t> bytes = in.ConsumeBytes<std::uint8_t>(sizeof table);
+      std::memcpy(&table, bytes.data(), bytes.size());
+      checked("grTexDownloadTable", [&] { grTexDownloadTable(tmu, type, &table); });
+      const GrNCCTable_t ncc = enum_value(in, GR_NCCTABLE_NCC0, GR_NCCTABLE_NCC1);
+      checked("grTexNCCTable", [&] { grTexNCCTable(tmu, ncc); });
+      break;
+    }
+    case 53: {
+      const GrAlpha_t alpha = in.ConsumeIntegral<GrAlpha_t>();
+      checked("grLfbConstantAlpha", [&] { grLfbConstantAlpha(alpha); });
+      const FxU16 depth = in.ConsumeIntegral<FxU16>();
+      checked("grLfbConstantDepth", [&] { grLfbConstantDepth(depth); });
+      break;
+    }
+    case 54:
+      state_round_trip();
       break;
     default:
       // Closing and reopening: every group goes back to grSstWinOpen's defaults.

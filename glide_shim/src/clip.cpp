@@ -96,12 +96,7 @@ void guDrawPolygonVertexListWithClip(int nverts, const GrVertex vlist[]) {
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "guDrawPolygonVertexListWithClip: vlist is NULL");
     return;
   }
-  if (nverts < 3) {
-    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "guDrawPolygonVertexListWithClip: " +
-                                               std::to_string(nverts) +
-                                               " vertices; a polygon needs at least 3");
-    return;
-  }
+  if (!glide_shim::check_polygon_count(ctx, "guDrawPolygonVertexListWithClip", nverts)) return;
   const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
   std::vector<ShimVertex> polygon(static_cast<std::size_t>(nverts));
   for (std::size_t i = 0; i < polygon.size(); ++i) {

@@ -120,6 +120,22 @@ void queue_fringe(GlideContext &context, const ShimVertex &p, const ShimVertex &
   queue_triangle(context, q, p_out, q_out);
 }
 
+bool check_polygon_count(GlideContext &context, const char *function, int nverts) {
+  if (nverts < 3) {
+    context.report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(function) + ": " +
+                                                   std::to_string(nverts) +
+                                                   " vertices; a polygon needs at least 3");
+    return false;
+  }
+  if (nverts > kMaxPolygonVertices) {
+    context.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+                   std::string(function) + ": " + std::to_string(nverts) +
+                       " vertices, more than the limit of " + std::to_string(kMaxPolygonVertices));
+    return false;
+  }
+  return true;
+}
+
 namespace {
 
 // The program's polygon (through `ilist` when given) as shim vertices; false after reporting.
@@ -130,12 +146,7 @@ bool convert_polygon(GlideContext &context, const char *function, int nverts, co
                    std::string(function) + (vlist == nullptr ? ": vlist is NULL" : ": ilist is NULL"));
     return false;
   }
-  if (nverts < 3) {
-    context.report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(function) + ": " +
-                                                   std::to_string(nverts) +
-                                                   " vertices; a polygon needs at least 3");
-    return false;
-  }
+  if (!check_polygon_count(context, function, nverts)) return false;
   const VertexFields fields = fields_read(context);
   std::vector<ShimVertex> polygon(static_cast<std::size_t>(nverts));
   for (int i = 0; i < nverts; ++i) {

@@ -19,6 +19,13 @@ VertexFields fields_read(const GlideContext &context);
 // The largest |x| or |y| the rasteriser takes: Glide's 12.4 fixed-point setup range.
 constexpr float kMaxScreenCoordinate = 32768.0f;
 
+// The most vertices a polygon call takes. Glide sets no maximum; a count beyond this is a
+// corrupt argument, not a polygon, and would otherwise be allocated and read before any check.
+constexpr int kMaxPolygonVertices = 65536;
+
+// False (with an error reported naming `function`) for a polygon count outside 3..65536.
+bool check_polygon_count(GlideContext &context, const char *function, int nverts);
+
 // False (with an error reported naming `function`) for NaN, infinity or coordinates beyond
 // `max_coordinate`; guDrawTriangleWithClip passes a larger bound, since it clips first.
 bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,

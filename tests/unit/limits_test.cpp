@@ -233,4 +233,31 @@ TEST(GlideLimits, AbsurdWindowSizeIsRefusedAndTheDefaultStays) {
   grGlideShutdown();
 }
 
+TEST(GlideLimits, PolygonOfABillionVerticesIsRefusedWithoutReadingThem) {
+  grGlideInit();
+  ASSERT_EQ(glideShimSetWindowSize(64, 64), FXTRUE);
+  ASSERT_EQ(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                         GR_ORIGIN_UPPER_LEFT, 2, 1),
+            FXTRUE)
+      << glideShimGetLastErrorMessage();
+  const GrVertex triangle[3] = {};  // the only vertices there are: reading past them is a bug
+  const int ilist[3] = {0, 1, 2};
+  glideShimClearError();
+  grDrawPolygonVertexList(1'000'000'000, triangle);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_OUT_OF_RANGE);
+  EXPECT_STREQ(glideShimGetLastErrorMessage(),
+               "grDrawPolygonVertexList: 1000000000 vertices, more than the limit of 65536");
+  glideShimClearError();
+  grDrawPolygon(1'000'000'000, ilist, triangle);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_OUT_OF_RANGE);
+  EXPECT_STREQ(glideShimGetLastErrorMessage(),
+               "grDrawPolygon: 1000000000 vertices, more than the limit of 65536");
+  glideShimClearError();
+  guDrawPolygonVertexListWithClip(1'000'000'000, triangle);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_OUT_OF_RANGE);
+  EXPECT_STREQ(glideShimGetLastErrorMessage(),
+               "guDrawPolygonVertexListWithClip: 1000000000 vertices, more than the limit of 65536");
+  grGlideShutdown();
+}
+
 }  // namespace
