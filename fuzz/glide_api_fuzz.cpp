@@ -24,7 +24,6 @@
 #include <cstring>
 #include <limits>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace {
@@ -38,20 +37,52 @@ using glide_shim::GlideContext;
 
 // ---- the context's state, to compare before and after a rejected call ---------------------
 
-template <typename T>
-void copy_bytes(T &to, const T &from) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  std::memcpy(&to, &from, sizeof(T));
+// Field by field: whole-struct byte comparisons would also compare padding, which an assignment
+// of the same values may change.
+bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }  // NaN equals NaN
+bool same(const glide_shim::ColorPathState &a, const glide_shim::ColorPathState &b) {
+  return a.color == b.color && a.alpha == b.alpha && a.constant_color == b.constant_color;
+}
+bool same(const glide_shim::BlendState &a, const glide_shim::BlendState &b) {
+  return a.rgb_src == b.rgb_src && a.rgb_dst == b.rgb_dst && a.alpha_src == b.alpha_src &&
+         a.alpha_dst == b.alpha_dst && a.alpha_test_function == b.alpha_test_function &&
+         a.alpha_test_reference == b.alpha_test_reference;
+}
+bool same(const glide_shim::ChromaKeyState &a, const glide_shim::ChromaKeyState &b) {
+  return a.mode == b.mode && a.value == b.value;
+}
+bool same(const glide_shim::DepthState &a, const glide_shim::DepthState &b) {
+  return a.mode == b.mode && a.function == b.function && a.mask == b.mask &&
+         a.bias_level == b.bias_level;
+}
+bool same(const glide_shim::ClipRect &a, const glide_shim::ClipRect &b) {
+  return a.min_x == b.min_x && a.min_y == b.min_y && a.max_x == b.max_x && a.max_y == b.max_y;
+}
+bool same(const glide_shim::RasterState &a, const glide_shim::RasterState &b) {
+  return a.cull == b.cull && a.dither == b.dither && same(a.clip, b.clip) &&
+         a.rgb_mask == b.rgb_mask && a.alpha_mask == b.alpha_mask &&
+         a.render_buffer == b.render_buffer && a.origin == b.origin && a.stw_hint == b.stw_hint;
+}
+bool same(const glide_shim::DisplayState &a, const glide_shim::DisplayState &b) {
+  return a.open == b.open && a.width == b.width && a.height == b.height &&
+         a.color_format == b.color_format && same(a.gamma, b.gamma) && a.swaps == b.swaps &&
+         a.none_width == b.none_width && a.none_height == b.none_height;
+}
+bool same(const glide_shim::TextureTarget &a, const glide_shim::TextureTarget &b) {
+  return a.active == b.active && a.address == b.address && a.side == b.side &&
+         same(a.saved_clip, b.saved_clip);
+}
+bool same(const glide_shim::TextureSource &a, const glide_shim::TextureSource &b) {
+  return a.valid == b.valid && a.address == b.address && a.small_lod == b.small_lod &&
+         a.large_lod == b.large_lod && a.aspect == b.aspect && a.format == b.format;
+}
+bool same(const glide_shim::TmuState &a, const glide_shim::TmuState &b) {
+  return a.clamp_s == b.clamp_s && a.clamp_t == b.clamp_t && a.min_filter == b.min_filter &&
+         a.mag_filter == b.mag_filter && a.mipmap_mode == b.mipmap_mode &&
+         a.lod_blend == b.lod_blend && same(a.lod_bias, b.lod_bias) && a.combine == b.combine &&
+         same(a.source, b.source);
 }
 
-template <typename T>
-bool same_bytes(const T &a, const T &b) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-
-// Plain groups are compared byte for byte (copied with memcpy so padding compares too); the TMU
-// and LFB groups hold vectors and are compared field by field.
 struct Snapshot {
   bool initialized, plain_gl;
   glide_shim::ColorPathState color_path;
@@ -61,14 +92,7 @@ struct Snapshot {
   glide_shim::RasterState raster;
   glide_shim::DisplayState display;
   glide_shim::TextureTarget texture_target;
-  glide_shim::TexCombineUnit tex_combine;
-  glide_shim::TextureSource tex_source;
-  GrTextureClampMode_t clamp_s, clamp_t;
-  GrTextureFilterMode_t min_filter, mag_filter;
-  GrMipMapMode_t mipmap_mode;
-  bool lod_blend;
-  float lod_bias;
-  std::vector<std::uint8_t> tmu_memory;
+  glide_shim::TmuState tmu;  // memory included
   bool read_locked, write_locked;
   GrBuffer_t write_buffer;
   GrOriginLocation_t write_origin;
@@ -77,21 +101,14 @@ struct Snapshot {
   void take(const GlideContext &ctx) {
     initialized = ctx.initialized;
     plain_gl = ctx.plain_gl;
-    copy_bytes(color_path, ctx.color_path);
-    copy_bytes(blend, ctx.blend);
-    copy_bytes(chroma, ctx.chroma);
-    copy_bytes(depth, ctx.depth);
-    copy_bytes(raster, ctx.raster);
-    copy_bytes(display, ctx.display);
-    copy_bytes(texture_target, ctx.texture_target);
-    copy_bytes(tex_combine, ctx.tmu.combine);
-    copy_bytes(tex_source, ctx.tmu.source);
-    clamp_s = ctx.tmu.clamp_s, clamp_t = ctx.tmu.clamp_t;
-    min_filter = ctx.tmu.min_filter, mag_filter = ctx.tmu.mag_filter;
-    mipmap_mode = ctx.tmu.mipmap_mode;
-    lod_blend = ctx.tmu.lod_blend;
-    lod_bias = ctx.tmu.lod_bias;
-    tmu_memory = ctx.tmu.memory;
+    color_path = ctx.color_path;
+    blend = ctx.blend;
+    chroma = ctx.chroma;
+    depth = ctx.depth;
+    raster = ctx.raster;
+    display = ctx.display;
+    texture_target = ctx.texture_target;
+    tmu = ctx.tmu;
     read_locked = ctx.lfb.read_locked, write_locked = ctx.lfb.write_locked;
     write_buffer = ctx.lfb.write_buffer, write_origin = ctx.lfb.write_origin;
     write_pixels = ctx.lfb.write_pixels;
@@ -100,21 +117,15 @@ struct Snapshot {
   // The name of the first group that differs from `ctx`, or nullptr.
   const char *differs(const GlideContext &ctx) const {
     if (initialized != ctx.initialized || plain_gl != ctx.plain_gl) return "library state";
-    if (!same_bytes(color_path, ctx.color_path)) return "colour path";
-    if (!same_bytes(blend, ctx.blend)) return "blend";
-    if (!same_bytes(chroma, ctx.chroma)) return "chroma key";
-    if (!same_bytes(depth, ctx.depth)) return "depth";
-    if (!same_bytes(raster, ctx.raster)) return "raster";
-    if (!same_bytes(display, ctx.display)) return "display";
-    if (!same_bytes(texture_target, ctx.texture_target)) return "texture target";
-    if (!same_bytes(tex_combine, ctx.tmu.combine)) return "texture combine";
-    if (!same_bytes(tex_source, ctx.tmu.source)) return "texture source";
-    if (clamp_s != ctx.tmu.clamp_s || clamp_t != ctx.tmu.clamp_t ||
-        min_filter != ctx.tmu.min_filter || mag_filter != ctx.tmu.mag_filter ||
-        mipmap_mode != ctx.tmu.mipmap_mode || lod_blend != ctx.tmu.lod_blend ||
-        std::memcmp(&lod_bias, &ctx.tmu.lod_bias, sizeof lod_bias) != 0)
-      return "texture modes";
-    if (tmu_memory != ctx.tmu.memory) return "TMU memory";
+    if (!same(color_path, ctx.color_path)) return "colour path";
+    if (!same(blend, ctx.blend)) return "blend";
+    if (!same(chroma, ctx.chroma)) return "chroma key";
+    if (!same(depth, ctx.depth)) return "depth";
+    if (!same(raster, ctx.raster)) return "raster";
+    if (!same(display, ctx.display)) return "display";
+    if (!same(texture_target, ctx.texture_target)) return "texture target";
+    if (!same(tmu, ctx.tmu)) return "texture modes";
+    if (tmu.memory != ctx.tmu.memory) return "TMU memory";
     if (read_locked != ctx.lfb.read_locked || write_locked != ctx.lfb.write_locked ||
         write_buffer != ctx.lfb.write_buffer || write_origin != ctx.lfb.write_origin)
       return "LFB locks";
