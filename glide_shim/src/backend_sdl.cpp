@@ -32,8 +32,8 @@ struct SdlFunctions {
 #undef GLIDESHIM_DECLARE_SDL
 };
 
-// libSDL2 stays loaded once opened: unloading it would also unload the GL and X11 libraries it
-// opened, which do not all survive being loaded a second time in one process.
+// libSDL2 is opened once and stays loaded: SDL_QuitSubSystem at each window's close already
+// lets go of the display, and the program itself may use SDL as well.
 const SdlFunctions *load_sdl(std::string &error) {
   static SdlFunctions functions;
   static std::string load_error = [] {
