@@ -491,6 +491,15 @@ TEST(HardCases, SceneFarFromTheOriginOrScaled) {
       EXPECT_EQ(o.errors.false_light_interior, 0.0) << name << " at " << offset;
       EXPECT_LE(o.errors.max_distance_px, at_origin.errors.max_distance_px + 1.0) << name;
     }
+    // The same scene written at 1e6 m in its file gives the same floats, so the same mask.
+    if (name == kTechniques.front()) {
+      gs::Scene moved = origin;
+      hard_cases::move_scene(moved, glm::dvec3(1e6, 0.0, 1e6), 1.0);
+      const gs::Scene written = hard_cases::load("far_from_origin.json");
+      const Truth truth = truth_of(written);
+      EXPECT_EQ(truth.exact.shadow, truth_of(moved).exact.shadow);
+      EXPECT_EQ(run(name, written, truth).mask, run(name, moved, truth).mask);
+    }
     // Scaling the scene (camera clip distances too) changes no projected point and, with clip w
     // counted in near-plane distances, no depth: the very same mask.
     for (double scale : {1e-3, 1e3}) {
