@@ -194,8 +194,12 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
                        "-bit depth maps do not exist (16 or 24); using 24");
   }
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
-    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light));
     maps_.push_back(0);
+    if (scene_.lights[light].is_projector()) {  // slides cast no shadows: no map, gate open
+      frustums_.emplace_back();
+      continue;
+    }
+    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light));
     const LightFrustum &frustum = frustums_.back();
     if (!frustum.problem.empty()) {
       warnings.push_back(frustum.problem);
@@ -293,11 +297,10 @@ void Passes::lit_passes() {
   gl_.glEnable(GL_BLEND);
   gl_.glBlendFunc(GL_SRC_ALPHA, GL_ONE);  // adds the light x the lit fraction of the 2x2
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
-    if (scene_.lights[light].is_projector()) continue;  // slides light only through their pass
     const SpotLight &spot = scene_.lights[light];
     bind_shadow_units(light, GL_LEQUAL);
-    // A beam map and exact attenuation are applied per pixel by units 2 and 3; the vertex
-    // colours carry the rest of the light.
+    // A beam map or slide, and exact attenuation, are applied per pixel by units 2 and 3; the
+    // vertex colours carry the rest of the light.
     std::optional<GlLightUnits> beam;
     if (GlLightUnits::needed_for(spot)) {
       beam.emplace(gl_, spot, farthest_from(spot));

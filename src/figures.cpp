@@ -53,6 +53,10 @@ const std::vector<FigureEntry> &figure_table() {
       {"sgi-3", "Segal et al. 1992, Figure 3",
        "A slide projector: the slide (left) and the scene lit by it and an ambient light (right).",
        figure_sgi_3},
+      {"sgi-4", "Segal et al. 1992, Figure 4",
+       "A spotlight with a shadow: the shadow map (left), the spotlight's intensity map (centre), "
+       "and the scene lit with both (right).",
+       figure_sgi_4},
       {"everitt-2", "Everitt et al. 2001, Figure 2",
        "A shadow-mapped scene from the eye, the scene from the light, and the light's depth map.",
        figure_everitt_2},

@@ -88,6 +88,7 @@ void figure_nguyen_16(Figure &figure);
 void figure_nguyen_17(Figure &figure);
 // Segal et al. 1992 (figures_sgi.cpp).
 void figure_sgi_3(Figure &figure);
+void figure_sgi_4(Figure &figure);
 // Everitt et al. 2001 (figures_everitt.cpp).
 void figure_everitt_2(Figure &figure);
 void figure_everitt_4(Figure &figure);

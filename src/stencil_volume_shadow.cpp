@@ -269,7 +269,12 @@ class StencilVolumeShadow final : public ShadowTechnique {
     finish_step(1);
     std::vector<glm::vec4> volumes;
     for (const SpotLight &light : scene.lights) {
-      if (light.is_projector()) continue;  // slides cast no shadows
+      if (light.is_projector()) {  // slides cast no shadows: their light added unstencilled
+        gl_.glDisable(GL_STENCIL_TEST);
+        draw_lit_pass(light, frame);  // 3
+        finish_step(2);
+        continue;
+      }
       const bool z_fail = uses_z_fail(scene, light);  // 2
       build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
@@ -370,7 +375,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
   // themselves lies in their volume, which is physically right; their lit faces are kept lit by
   // count_volumes' depth test. A caster drawn from a simplified shadow_mesh (the fighters) is
   // not its volume's exact surface, so a few pixels near its silhouette may darken.
-  // A beam map and exact attenuation are applied per pixel by texture units 2 and 3
+  // A beam map or slide, and exact attenuation, are applied per pixel by texture units 2 and 3
   // (gl_light_units.h); the vertex colours carry the rest of the light.
   void draw_lit_pass(const SpotLight &light, FrameData &frame) {
     std::optional<GlLightUnits> beam;
@@ -378,7 +383,7 @@ class StencilVolumeShadow final : public ShadowTechnique {
     for (const Surface &surface : frame.surfaces)
       for (const glm::vec3 &p : surface.world) farthest = std::max(farthest, axial_distance(light, p));
     if (GlLightUnits::needed_for(light)) {
-      beam.emplace(gl_, light, farthest);
+      beam.emplace(gl_, light, farthest, frame.origin);
       beam->bind();
     }
     const bool attenuation_per_pixel = beam && light.attenuation.mode == AttenuationMode::PerPixel;
