@@ -9,9 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 namespace gs {
 namespace {
+
+constexpr std::uintmax_t kMaxImageFileBytes = 64u << 20;  // far above any slide or beam map
 
 float smoothstep(float edge0, float edge1, float x) {
   const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
@@ -137,6 +141,17 @@ std::vector<std::uint8_t> attenuation_texels(const SpotLight &light, float near_
 
 bool load_projected_image(const std::string &path, int side, ProjectedImage &image,
                           std::string &error) {
+  // Only a regular file of a sane size is handed to the decoder: a FIFO or a device would block
+  // or never end.
+  std::error_code code;
+  if (!std::filesystem::is_regular_file(path, code)) {
+    error = path + ": cannot read the image (not a regular file)";
+    return false;
+  }
+  if (std::filesystem::file_size(path, code) > kMaxImageFileBytes || code) {
+    error = path + ": cannot read the image (larger than 64 MiB)";
+    return false;
+  }
   OIIO::ImageBuf file(path);
   if (!file.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     error = path + ": cannot read the image (" + file.geterror() + ")";

@@ -791,7 +791,6 @@ TEST_F(BadInputTest, RejectedDownloadLeavesTmuMemoryUnchanged) {
   GrTexInfo chain = tex_info(GR_LOD_1, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565);
   GrTexInfo reversed = tex_info(GR_LOD_256, GR_LOD_1, GR_ASPECT_1x1, GR_TEXFMT_RGB_565);
   GrTexInfo reserved = tex_info(GR_LOD_256, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RSVD2);
-  GrTexInfo palette = tex_info(GR_LOD_256, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_P_8);
   const std::vector<std::pair<GlideShimError, BadCall>> calls = {
       {GLIDESHIM_ERR_OUT_OF_RANGE, {"grTexDownloadMipMap", [&] { grTexDownloadMipMap(GR_TMU0, tmu_bytes - 65536u, GR_MIPMAPLEVELMASK_BOTH, &big); }}},
       // Only the odd levels (128, 32, 8, 2) run past the end: 34952 bytes from 2 MB - 32768.
