@@ -178,8 +178,26 @@ bool write_gif(const std::vector<std::string> &frames, const std::string &path, 
   return out->close();
 }
 
+// The demo's spotlight as a projective-texture light (Segal et al. 3.2), from the command line.
+struct DemoBeam {
+  std::string beam;                 // empty: the plain cone; else a built-in beam pattern
+  std::string attenuation = "none"; // none, vertex, exact
+};
+
+void apply_demo_beam(const DemoBeam &choice, gs::SpotLight &light) {
+  light.beam = choice.beam;
+  // Falls to about half at the far rope (8 m from the light along its axis).
+  light.attenuation = {gs::AttenuationMode::None, 1.0f, 0.0f, 0.015f};
+  if (choice.attenuation == "vertex") light.attenuation.mode = gs::AttenuationMode::PerVertex;
+  if (choice.attenuation == "exact") light.attenuation.mode = gs::AttenuationMode::PerPixel;
+}
+
 int run_demo(int frames, const std::string &size_text, int shadow_size, const TechniqueChoice &choice,
-             const std::string &out_dir, int fps, bool gif, bool sheet) {
+             const DemoBeam &beam, const std::string &out_dir, int fps, bool gif, bool sheet) {
+  if (beam.attenuation == "exact" && beam.beam.empty()) {
+    std::fprintf(stderr, "glideshadows demo: --attenuation exact needs a beam map: give --beam\n");
+    return 2;
+  }
   int width = 0, height = 0;
   if (!parse_size(size_text, width, height)) {
     std::fprintf(stderr, "glideshadows demo: --size '%s' must be WxH with each side 64..2048\n", size_text.c_str());
@@ -205,8 +223,15 @@ int run_demo(int frames, const std::string &size_text, int shadow_size, const Te
   std::vector<std::string> warnings;
   const bool tty = isatty(fileno(stderr)) != 0;
   for (int i = 0; i < frames; ++i) {
-    const gs::Scene &scene = fight.at(static_cast<float>(i) / static_cast<float>(fps));
-    const gs::FrameReport frame = technique->render(scene, true);
+    const gs::Scene &fight_frame = fight.at(static_cast<float>(i) / static_cast<float>(fps));
+    const gs::Scene *scene = &fight_frame;
+    gs::Scene beamed;  // a copy only when the spotlight changes
+    if (!beam.beam.empty() || beam.attenuation != "none") {
+      beamed = fight_frame;
+      apply_demo_beam(beam, beamed.lights.front());
+      scene = &beamed;
+    }
+    const gs::FrameReport frame = technique->render(*scene, true);
     if (i > 0) times.push_back(frame);  // frame 0 pays llvmpipe's shader compiles
     for (const std::string &w : frame.warnings) {
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
@@ -477,6 +502,14 @@ int main(int argc, char **argv) {
   demo->add_flag("--gif", gif, "also write an animated GIF (half size) of the frames");
   demo->add_flag("--contact-sheet", sheet, "also write a 4x4 contact sheet of frames from the run");
   add_technique_options(*demo, demo_choice, shadow_size);
+  DemoBeam demo_beam;
+  demo->add_option("--beam", demo_beam.beam,
+                   "give the spotlight a projected beam map: round, square, gobo or lens")
+      ->check(CLI::IsMember({"round", "square", "gobo", "lens"}));
+  demo->add_option("--attenuation", demo_beam.attenuation,
+                   "the spotlight's attenuation with distance: none, vertex or exact (needs --beam)")
+      ->check(CLI::IsMember({"none", "vertex", "exact"}))
+      ->capture_default_str();
 
   CLI::App *render = app.add_subcommand("render", "render a scene file (JSON, docs/scene_format.md)");
   std::string scene_path, out = "render.png", mask;
@@ -531,7 +564,7 @@ int main(int argc, char **argv) {
   if (truth->parsed()) return run_truth(truth_scene, truth_mask, truth_image);
   if (compare->parsed()) return run_compare(compare_a, compare_b, compare_diff);
   if (demo->parsed()) {
-    return run_demo(frames, size, shadow_size, demo_choice, out_dir, fps, gif, sheet);
+    return run_demo(frames, size, shadow_size, demo_choice, demo_beam, out_dir, fps, gif, sheet);
   }
   return run_render(scene_path, render_choice, render_shadow_size, out, mask);
 }

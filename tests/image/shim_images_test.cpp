@@ -52,6 +52,30 @@ TEST(FightDemo, FramesMatchTheirReferences) {
   EXPECT_TRUE(matches_reference("fight_frame_0063", (dir / "frame_0063.png").string(), kAcrossCpus));
 }
 
+TEST(FightDemo, SpotlightBeamMapCastsTheGobosBarsOnTheRing) {
+  // The demo's spotlight as a projective-texture light: the window gobo's bars take the light
+  // off bands of the ring that the plain cone lights; exact attenuation needs a beam map.
+  const std::filesystem::path plain = output_path("fight_plain"), gobo = output_path("fight_gobo");
+  const std::string base = std::string(GLIDESHADOWS_PATH) + " demo --frames 1 --size 320x240 --out ";
+  ASSERT_EQ(std::system((base + plain.string() + " > /dev/null 2>&1").c_str()), 0);
+  ASSERT_EQ(std::system((base + gobo.string() + " --beam gobo --attenuation exact > /dev/null 2>&1").c_str()), 0);
+  OIIO::ImageBuf a((plain / "frame_0000.png").string()), b((gobo / "frame_0000.png").string());
+  ASSERT_TRUE(a.read(0, 0, true, OIIO::TypeDesc::FLOAT) && b.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+  long barred = 0;
+  for (int y = 0; y < 240; ++y) {
+    for (int x = 0; x < 320; ++x) {
+      float lit[3], cut[3];
+      a.getpixel(x, y, lit, 3);
+      b.getpixel(x, y, cut, 3);
+      barred += lit[1] - cut[1] > 0.25f;  // a lit pixel (green) the bars turned dark
+    }
+  }
+  EXPECT_GT(barred, 300) << "the gobo's bars should darken bands of the lit ring";
+  const std::string log = output_path("fight_exact_without_beam.log");
+  EXPECT_NE(std::system((base + output_path("fight_bad") + " --attenuation exact 2> " + log).c_str()), 0);
+  EXPECT_NE(file_bytes(log).find("--attenuation exact needs a beam map"), std::string::npos);
+}
+
 TEST(SceneFiles, EverySampleSceneRendersWithItsMask) {
   // `glideshadows render` on each file in scenes/, as a user would run it.
   int scenes = 0;
