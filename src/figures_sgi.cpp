@@ -117,16 +117,12 @@ void figure_sgi_3(Figure &figure) {
 
 namespace {
 
-// The paper's Figure 4 scene (scenes/spotlight.json): a box and a pillar on a floor under a
-// spotlight whose beam map is a window gobo, its attenuation exact per pixel.
+// The paper's Figure 4 scene (scenes/spotlight.json): Figure 3's floor, box and pillar, the box
+// and pillar moved apart, under a spotlight whose beam map is a window gobo, its attenuation
+// exact per pixel.
 Scene spotlight_scene() {
-  Scene scene;
-  scene.width = kFigureWindowWidth;
-  scene.height = kFigureWindowHeight;
+  Scene scene = projector_scene();
   scene.ambient = glm::vec3(0.12f, 0.12f, 0.14f);
-  scene.camera.position = glm::vec3(0.0f, 4.0f, 7.0f);
-  scene.camera.target = glm::vec3(0.0f, 0.6f, 0.0f);
-  scene.camera.fov_degrees = 50.0f;
   SpotLight spot;
   spot.position = glm::vec3(-1.5f, 5.5f, 2.5f);
   spot.target = glm::vec3(0.2f, 0.0f, -0.3f);
@@ -135,22 +131,9 @@ Scene spotlight_scene() {
   spot.beam = "gobo";
   spot.attenuation = {AttenuationMode::PerPixel, 0.2f, 0.0f, 0.03f};
   scene.lights = {spot};
-  SceneObject floor;
-  floor.name = "floor";
-  floor.mesh = make_plane(8.0f, 8);
-  floor.mesh.set_color(glm::vec3(0.9f));
-  floor.casts_shadow = false;
-  SceneObject box;
-  box.name = "box";
-  box.mesh = make_box(glm::vec3(0.5f));
-  box.mesh.set_color(glm::vec3(0.9f, 0.5f, 0.3f));
-  box.model_to_world = glm::translate(glm::mat4(1.0f), glm::vec3(-0.6f, 0.5f, 0.2f));
-  SceneObject pillar;
-  pillar.name = "pillar";
-  pillar.mesh = make_cylinder(0.3f, 1.6f, 24, true);
-  pillar.mesh.set_color(glm::vec3(0.4f, 0.6f, 0.9f));
-  pillar.model_to_world = glm::translate(glm::mat4(1.0f), glm::vec3(1.3f, 0.0f, -0.6f));
-  scene.objects = {floor, box, pillar};
+  scene.objects[0].casts_shadow = false;  // the floor
+  scene.objects[1].model_to_world = glm::translate(glm::mat4(1.0f), glm::vec3(-0.6f, 0.5f, 0.2f));
+  scene.objects[2].model_to_world = glm::translate(glm::mat4(1.0f), glm::vec3(1.3f, 0.0f, -0.6f));
   return scene;
 }
 
