@@ -208,6 +208,24 @@ Mesh make_heightfield(float size, int divisions, const std::function<float(float
   return mesh;
 }
 
+namespace {
+
+// The 1-based number of the first line that is a `vw` statement (after leading blanks), 0 if none.
+std::size_t first_vertex_weight_line(const std::string &text) {
+  std::size_t line = 1;
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::size_t at = start;
+    while (at < end && (text[at] == ' ' || text[at] == '\t')) ++at;
+    if (end - at >= 3 && text.compare(at, 2, "vw") == 0 && (text[at + 2] == ' ' || text[at + 2] == '\t'))
+      return line;
+    start = end + 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
 bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -215,6 +233,15 @@ bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
   std::string warning, message, text;
   if (!read_input_file(path, kMaxObjFileBytes, text, message)) {
     error = path + ": " + message;
+    return false;
+  }
+  // Vertex-weight lines (`vw`, a tinyobjloader extension no mesh here needs) are refused before
+  // parsing: tinyobjloader converts their joint id from float to int unchecked, undefined for a
+  // huge value (found by fuzz/obj_fuzz).
+  const std::size_t weights = first_vertex_weight_line(text);
+  if (weights != 0) {
+    error = path + ": line " + std::to_string(weights) +
+            ": vertex weights ('vw' lines) are not supported";
     return false;
   }
   std::istringstream stream(text);

@@ -272,6 +272,17 @@ TEST(LoadObj, OutOfRangeIndexFailsNamingTheFileAndLeavesTheMeshAlone) {
   EXPECT_EQ(mesh.triangle_count(), 12u);
 }
 
+// fuzz/obj_fuzz's finding: a `vw` line with a joint id past int made tinyobjloader convert it
+// unchecked (undefined behaviour); such lines are refused before parsing, naming the line.
+TEST(LoadObj, VertexWeightLinesAreRefusedBeforeParsing) {
+  Mesh mesh = make_box(glm::vec3(1.0f));
+  std::string error;
+  EXPECT_FALSE(load_obj(kDataDir + "/vertex_weight_overflow.obj", mesh, error));
+  EXPECT_NE(error.find("line 5: vertex weights ('vw' lines) are not supported"), std::string::npos)
+      << error;
+  EXPECT_EQ(mesh.positions.size(), 24u);
+}
+
 TEST(LoadObj, FileWithoutTrianglesFails) {
   const std::string path = ::testing::TempDir() + "geometry_test_points_only.obj";
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
