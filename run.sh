@@ -6,12 +6,13 @@
 #   ./run.sh bench   build, then run the benchmark programs
 #   ./run.sh sanitize  build in build-asan/ with ASan+UBSan, then run the whole test suite there
 #   ./run.sh fuzz    build the libFuzzer targets in build-fuzz/ (clang), run each for
-#                    FUZZ_SECONDS (default 60) from fuzz/corpus/; a finding fails the run
+#                    FUZZ_SECONDS (default 60) from fuzz/corpus/, mutation seed FUZZ_SEED
+#                    (default 1, so CI repeats itself); a finding fails the run
 set -euo pipefail
 cd "$(dirname "$0")"
 
 usage() {
-  sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 PACKAGES=(
@@ -85,15 +86,18 @@ build_fuzzers() {
 
 # Each target starts from the checked-in seeds (read only) and writes what it finds new to
 # build-fuzz/corpus/<target>/; a crashing input is saved in build-fuzz/artifacts/.
+# The mutation seed is fixed (FUZZ_SEED, default 1) so that CI explores the same inputs on
+# every run; set another seed to explore further by hand.
 run_fuzzers() {
   local seconds=${FUZZ_SECONDS:-60}
+  local seed=${FUZZ_SEED:-1}
   local failed=()
   export_sanitizer_options
   mkdir -p build-fuzz/artifacts
   for target in "${FUZZ_TARGETS[@]}"; do
     mkdir -p "build-fuzz/corpus/$target"
     echo "run.sh: fuzzing $target for ${seconds}s"
-    if ! "build-fuzz/fuzz/$target" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 \
+    if ! "build-fuzz/fuzz/$target" -seed="$seed" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$target-" \
         "build-fuzz/corpus/$target" "fuzz/corpus/$target" > "build-fuzz/$target.log" 2>&1; then
       tail -40 "build-fuzz/$target.log"
