@@ -265,8 +265,9 @@ std::vector<std::string> article_step_comparison(const std::vector<BenchRow> &ro
   const std::optional<double> direct_ms =
       mean_over_fight(direct, [](const BenchRow &r) { return r.frame_ms; });
   add("rendering straight into texture memory", "about 50% faster",
-      lfb_ms && direct_ms ? percent(*lfb_ms / *direct_ms - 1.0) + " faster"
-                          : std::string("not measured (the direct path is not in --quick)"));
+      !lfb_ms || !direct_ms ? std::string("not measured (the direct path is not in --quick)")
+      : *lfb_ms >= *direct_ms ? percent(*lfb_ms / *direct_ms - 1.0) + " faster"
+                              : percent(1.0 - *lfb_ms / *direct_ms) + " slower");
   return lines;
 }
 

@@ -41,6 +41,13 @@ TEST(ArticleStepComparison, ReportsSharesSlowestStepAndDirectPathGain) {
   EXPECT_NE(text.find("50% faster"), std::string::npos) << text;  // 15 ms against 10 ms
 }
 
+TEST(ArticleStepComparison, ASlowerDirectPathIsCalledSlower) {
+  const std::string text = joined(gs::article_step_comparison(
+      {projected_row("fight t=0.5", "size 256 bilinear lfb", 10.0),
+       projected_row("fight t=0.5", "size 256 bilinear direct", 12.5)}));
+  EXPECT_NE(text.find("20% slower"), std::string::npos) << text;  // 10 ms is 20% less than 12.5
+}
+
 TEST(ArticleStepComparison, SaysWhatWasNotMeasured) {
   const std::string text =
       joined(gs::article_step_comparison({projected_row("fight t=2.1", "size 256 bilinear lfb", 12.0)}));
