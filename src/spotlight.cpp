@@ -148,7 +148,12 @@ bool load_projected_image(const std::string &path, int side, ProjectedImage &ima
     error = path + ": cannot read the image (not a regular file)";
     return false;
   }
-  if (std::filesystem::file_size(path, code) > kMaxImageFileBytes || code) {
+  const std::uintmax_t bytes = std::filesystem::file_size(path, code);
+  if (code) {
+    error = path + ": cannot read the image (" + code.message() + ")";
+    return false;
+  }
+  if (bytes > kMaxImageFileBytes) {
     error = path + ": cannot read the image (larger than 64 MiB)";
     return false;
   }
