@@ -3,6 +3,7 @@
 // and the splash and logo calls (no-ops).
 #include "context.h"
 #include "gl_renderer.h"
+#include "window.h"
 
 #include <cstring>
 #include <string>
@@ -160,6 +161,7 @@ void grSstWinClose(void) {
   auto &ctx = current();
   if (!ctx.display.open) return;  // closing twice is harmless, as in Glide
   ctx.flush();
+  glide_shim::hold_last_frame(ctx);
   ctx.renderer.reset();
   ctx.display.open = false;
   ctx.tmu.memory.clear();

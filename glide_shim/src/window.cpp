@@ -7,6 +7,10 @@
 #include "gl_renderer.h"
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <vector>
 
 using glide_shim::current;
@@ -23,6 +27,26 @@ void show_front_buffer(GlideContext &context, int swap_interval) {
                       static_cast<std::size_t>(w) * 2);
   backend.set_swap_interval(swap_interval);
   backend.present(scan_out(pixels, context.display.gamma), w, h);
+}
+
+void hold_last_frame(GlideContext &context) {
+  const char *hold = std::getenv("GLIDESHIM_HOLD");
+  if (hold == nullptr || std::strcmp(hold, "1") != 0) return;
+  Backend &backend = context.renderer->backend();
+  if (!backend.shows_window()) return;
+  std::fprintf(stderr, "glideshim: holding the last frame (GLIDESHIM_HOLD=1): press a key in "
+                       "the window or close it\n");
+  std::fflush(stderr);
+  // Keys typed while the program ran, which it never read, do not end the hold.
+  backend.pump_events();
+  while (backend.next_key() != 0) {
+  }
+  const timespec poll_interval{0, 20 * 1000 * 1000};
+  for (;;) {
+    backend.pump_events();
+    if (backend.next_key() != 0 || backend.close_requested()) return;
+    nanosleep(&poll_interval, nullptr);
+  }
 }
 
 }  // namespace glide_shim

@@ -10,4 +10,10 @@ class GlideContext;
 // bytes the frame export writes. Does nothing for a headless backend.
 void show_front_buffer(GlideContext &context, int swap_interval);
 
+// At grSstWinClose with GLIDESHIM_HOLD=1 in the environment and a window backend: keeps the
+// window showing the last frame until a key is pressed or the window is closed, so the last
+// frame of a program that quits after `-n` frames can be looked at (and screenshot). Says so
+// once on stderr. Does nothing headless or without the variable.
+void hold_last_frame(GlideContext &context);
+
 }  // namespace glide_shim

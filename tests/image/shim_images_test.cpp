@@ -40,6 +40,43 @@ TEST(SampleProgram, ArticlePortRendersItsShadow) {
   EXPECT_TRUE(matches_reference("article_port", png, kAcrossCpus));
 }
 
+// demo/crate_3df.c, an SDK-style program, run as a user would from demo/data (where its .3df
+// textures are) for `frames` frames with the frame dump on. Returns the dump directory; the
+// program's output is in log.txt there, and its exit status in `status`.
+std::filesystem::path run_crate_3df(const std::string &arguments, int &status) {
+  const std::filesystem::path dir = std::filesystem::path(output_path("crate_3df"));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string command = "cd " + std::string(DEMO_DATA_DIR) + " && GLIDESHIM_DUMP_DIR=" +
+                              dir.string() + " " + CRATE_3DF_PATH + " " + arguments + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  status = std::system(command.c_str());
+  return dir;
+}
+
+TEST(SampleProgram, Crate3dfRendersItsTexturesFromDotThreeDfFiles) {
+  int status = -1;
+  const std::filesystem::path dir = run_crate_3df("-n 12", status);
+  const std::string log = file_bytes((dir / "log.txt").string());
+  ASSERT_EQ(status, 0) << log;
+  EXPECT_NE(log.find("crate_3df: 12 frames at 640x480"), std::string::npos) << log;
+  EXPECT_TRUE(std::filesystem::exists(dir / "frame_00011.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_00012.png")) << "-n 12 draws 12 frames";
+  EXPECT_TRUE(matches_reference("crate_3df", (dir / "frame_00011.png").string(), kAcrossCpus));
+  // The crate turns from frame to frame.
+  EXPECT_NE(file_bytes((dir / "frame_00000.png").string()),
+            file_bytes((dir / "frame_00011.png").string()));
+}
+
+TEST(SampleProgram, Crate3dfNamesATextureItCannotRead) {
+  int status = -1;
+  const std::filesystem::path dir = run_crate_3df("-n 1 -d /nonexistent/textures", status);
+  const std::string log = file_bytes((dir / "log.txt").string());
+  EXPECT_NE(status, 0);
+  EXPECT_NE(log.find("/nonexistent/textures/crate.3df"), std::string::npos) << log;
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_00000.png")) << "nothing drawn";
+}
+
 TEST(FightDemo, FramesMatchTheirReferences) {
   // Two moments of the fight (guard, and the red fighter's punch) at 320x240, run through the
   // command-line tool exactly as a user would.

@@ -110,6 +110,45 @@ TEST(DemoProgram, KeysTypedInTheWindowReachTheProgram) {
   EXPECT_NE(demo.output().find("key 27\n"), std::string::npos) << demo.output();
 }
 
+// ---- An unmodified SDK-style program: it knows nothing of windows or keys ----
+
+TEST(SdkProgram, WindowShowsTheHeadlessFrame) {
+  // demo/crate_3df.c is plain Glide: 640x480 ABGR, -n frames, textures from .3df files. The
+  // same binary runs headless (frame dump) and in the window; GLIDESHIM_HOLD=1 keeps its last
+  // frame up after it closes Glide, until a key.
+  const std::string dump = output_file("crate_3df_headless");
+  std::filesystem::remove_all(dump);
+  std::filesystem::create_directories(dump);
+  const std::string headless = "cd " + std::string(DEMO_DATA_DIR) +
+                               " && GLIDESHIM_BACKEND=osmesa GLIDESHIM_DUMP_DIR=" + dump + " " +
+                               CRATE_3DF_PATH + " -n 12 > /dev/null";
+  ASSERT_EQ(window_test::run_command(headless), 0) << headless;
+
+  ChildProcess program({"/bin/sh", "-c",
+                        "cd " + std::string(DEMO_DATA_DIR) + " && exec " + CRATE_3DF_PATH +
+                            " -n 12 2>&1"},
+                       {"GLIDESHIM_BACKEND=sdl", "GLIDESHIM_HOLD=1"});
+  ASSERT_TRUE(program.wait_for_line("holding the last frame", 60.0))
+      << "output: " << program.output();
+  const std::string window = window_test::window_of_process(program.pid());
+  ASSERT_FALSE(window.empty()) << "no visible window of crate_3df";
+
+  RgbImage shown, expected;
+  std::string error;
+  ASSERT_TRUE(window_test::screenshot(window, output_file("crate_3df_window.xwd"), shown, error))
+      << error;
+  ASSERT_TRUE(window_test::read_png(dump + "/frame_00011.png", expected, error)) << error;
+  EXPECT_EQ(shown.width, 640);
+  EXPECT_EQ(shown.height, 480);
+  EXPECT_GT(distinct_colours(expected), 100u) << "the frame should hold a textured scene";
+  EXPECT_TRUE(same_pixels(shown, expected));
+
+  ASSERT_EQ(window_test::run_command("xdotool windowfocus --sync " + window + " key space"), 0);
+  EXPECT_EQ(program.wait_for_exit(20.0), 0) << program.output();
+  EXPECT_NE(program.output().find("crate_3df: 12 frames at 640x480"), std::string::npos)
+      << program.output();
+}
+
 // ---- The shim in this process, with the window backend ----
 
 class SdlWindow : public ::testing::Test {
