@@ -1,8 +1,8 @@
 /* crate_3df: a Glide 2.x program in the style of the 3dfx SDK's test programs. It opens the
  * screen at 640x480 with ABGR colours, reads its textures from .3df files, and draws a lit crate
  * turning over a fogged, mip-mapped tile floor, with an alpha-blended logo in the corner, for
- * `-n` frames. Plain Glide: <glide.h> and <glideutl.h> only, so it builds against 3dfx's own
- * headers as well as the shim's.
+ * `-n` frames. Plain Glide 2.x C: <glide.h> and <glideutl.h> only, nothing of the shim's own
+ * (no glide_shim.h), as an old program would be.
  *
  *   crate_3df [-n FRAMES] [-d TEXTURE_DIR]
  *
