@@ -1,9 +1,13 @@
 // Chapter "linear frame buffer": locks and region copies. Reads return the raw 16-bit words the
 // pipeline wrote (565 colour, or depth codes from the aux buffer), always exact, which is what
-// lets a program reinterpret a rendered frame as an ARGB_4444 texture.
+// lets a program reinterpret a rendered frame as an ARGB_4444 texture. Written data is decoded as
+// the SST-1 decodes it (MAME's expand_lfb_data) under lfbMode's RGBA lanes, byte swizzle and word
+// swap; direct writes store the colour truncated to 565 and the depth code, and pipelined writes
+// (lfb_pipeline.cpp) run through the pixel pipeline.
 #include "context.h"
 #include "depth.h"
 #include "gl_renderer.h"
+#include "lfb_pipeline.h"
 
 #include <algorithm>
 #include <cstring>
@@ -52,25 +56,6 @@ void read_words(GrBuffer_t buffer, int x, int y, int w, int h, std::uint16_t *ds
   }
 }
 
-// One source pixel of grLfbWriteRegion as a 565 word (8-bit channels truncate, dither off).
-std::uint16_t to_565(GrLfbSrcFmt_t format, const std::uint8_t *p) {
-  std::uint16_t word;
-  std::uint32_t dword;
-  switch (format) {
-    case GR_LFB_SRC_FMT_565: std::memcpy(&word, p, 2); return word;
-    case GR_LFB_SRC_FMT_555:
-    case GR_LFB_SRC_FMT_1555:  // x/a in bit 15, then 5-5-5: green widens by replication
-      std::memcpy(&word, p, 2);
-      return static_cast<std::uint16_t>(((word & 0x7C00) << 1) |
-                                        (((word >> 5) & 0x1F) << 6) |
-                                        ((((word >> 5) & 0x1F) >> 4) << 5) | (word & 0x1F));
-    default:  // 888 and 8888: 32-bit words, 0xAARRGGBB
-      std::memcpy(&dword, p, 4);
-      return static_cast<std::uint16_t>((((dword >> 16) & 0xFF) >> 3) << 11 |
-                                        (((dword >> 8) & 0xFF) >> 2) << 5 | ((dword & 0xFF) >> 3));
-  }
-}
-
 // Bytes per pixel of an LFB write mode, and what its pixels carry.
 int write_mode_bytes(GrLfbWriteMode_t mode) {
   return mode == GR_LFBWRITEMODE_888 || mode == GR_LFBWRITEMODE_8888 ||
@@ -84,32 +69,135 @@ bool mode_has_depth(GrLfbWriteMode_t mode) {
   return mode == GR_LFBWRITEMODE_ZA16 || mode == GR_LFBWRITEMODE_565_DEPTH ||
          mode == GR_LFBWRITEMODE_555_DEPTH || mode == GR_LFBWRITEMODE_1555_DEPTH;
 }
-// The colour-only format of a mode's colour word (the LFB write modes share the source-format
-// values of grLfbWriteRegion).
-GrLfbSrcFmt_t color_format_of(GrLfbWriteMode_t mode) {
+// The colour-only mode of a mode's colour word: the +DEPTH modes hold it in their low 16 bits.
+GrLfbWriteMode_t color_mode_of(GrLfbWriteMode_t mode) {
   switch (mode) {
-    case GR_LFBWRITEMODE_565_DEPTH: return GR_LFB_SRC_FMT_565;
-    case GR_LFBWRITEMODE_555_DEPTH: return GR_LFB_SRC_FMT_555;
-    case GR_LFBWRITEMODE_1555_DEPTH: return GR_LFB_SRC_FMT_1555;
+    case GR_LFBWRITEMODE_565_DEPTH: return GR_LFBWRITEMODE_565;
+    case GR_LFBWRITEMODE_555_DEPTH: return GR_LFBWRITEMODE_555;
+    case GR_LFBWRITEMODE_1555_DEPTH: return GR_LFBWRITEMODE_1555;
     default: return mode;
   }
 }
 
-// A 565 word in a write mode's colour layout, so that a pixel the program leaves alone reads
-// back as what the buffer holds (888/8888 widen by bit replication, 555 drops green's low bit).
-void encode_color(GrLfbSrcFmt_t format, std::uint16_t word, std::uint8_t *p) {
-  const unsigned r5 = word >> 11, g6 = (word >> 5) & 0x3F, b5 = word & 0x1F;
-  if (format == GR_LFB_SRC_FMT_555 || format == GR_LFB_SRC_FMT_1555) {
-    const auto packed = static_cast<std::uint16_t>((format == GR_LFB_SRC_FMT_1555 ? 0x8000u : 0u) |
-                                                   (r5 << 10) | ((g6 >> 1) << 5) | b5);
-    std::memcpy(p, &packed, 2);
-  } else if (format == GR_LFB_SRC_FMT_888 || format == GR_LFB_SRC_FMT_8888) {
-    const std::uint32_t packed = 0xFF000000u | (((r5 << 3) | (r5 >> 2)) << 16) |
-                                 (((g6 << 2) | (g6 >> 4)) << 8) | ((b5 << 3) | (b5 >> 2));
-    std::memcpy(p, &packed, 4);
-  } else {
-    std::memcpy(p, &word, 2);
+// Where one channel sits in an LFB colour word.
+struct Field {
+  int shift, bits;  // bits 0: the word has no such field
+};
+struct ColorFields {
+  Field r, g, b, a;
+};
+
+// The channel layout of a colour mode under lfbMode's RGBA lanes (grLfbWriteColorFormat), as
+// MAME's expand_lfb_data decodes it: ABGR and BGRA put blue in the high field and red in the
+// low one; RGBA and BGRA move alpha (or the unused bits) below the colour. 565 has no spare bit,
+// so its RGBA is ARGB and its BGRA is ABGR.
+ColorFields color_fields(GrLfbWriteMode_t color_mode, GrColorFormat_t lanes) {
+  const bool blue_high = lanes == GR_COLORFORMAT_ABGR || lanes == GR_COLORFORMAT_BGRA;
+  const bool alpha_low = lanes == GR_COLORFORMAT_RGBA || lanes == GR_COLORFORMAT_BGRA;
+  auto rgb = [blue_high](int base, int red_blue_bits, int green_bits) {
+    const Field low{base, red_blue_bits}, high{base + red_blue_bits + green_bits, red_blue_bits};
+    return ColorFields{blue_high ? low : high, {base + red_blue_bits, green_bits},
+                       blue_high ? high : low, {0, 0}};
+  };
+  switch (color_mode) {
+    case GR_LFBWRITEMODE_565: return rgb(0, 5, 6);
+    case GR_LFBWRITEMODE_555:
+    case GR_LFBWRITEMODE_1555: {
+      ColorFields fields = rgb(alpha_low ? 1 : 0, 5, 5);
+      if (color_mode == GR_LFBWRITEMODE_1555) fields.a = {alpha_low ? 0 : 15, 1};
+      return fields;
+    }
+    default: {  // 888 and 8888: 32-bit words
+      ColorFields fields = rgb(alpha_low ? 8 : 0, 8, 8);
+      if (color_mode == GR_LFBWRITEMODE_8888) fields.a = {alpha_low ? 0 : 24, 8};
+      return fields;
+    }
   }
+}
+
+// A field widened to 8 bits by bit replication (a 1-bit alpha becomes 0 or 255).
+std::uint8_t widen(std::uint32_t word, Field field) {
+  const std::uint32_t value = (word >> field.shift) & ((1u << field.bits) - 1u);
+  switch (field.bits) {
+    case 1: return value != 0 ? 0xFF : 0;
+    case 5: return static_cast<std::uint8_t>(value << 3 | value >> 2);
+    case 6: return static_cast<std::uint8_t>(value << 2 | value >> 4);
+    default: return static_cast<std::uint8_t>(value);
+  }
+}
+
+// One LFB data word (a 16-bit mode's in the low half) as the hardware expands it: the colour
+// by the lanes, alpha from the data if the mode has alpha, else the constant alpha, and the depth
+// code from the data for ZA16 and the +DEPTH modes (high half), else the constant depth.
+glide_shim::LfbPixel expand(GrLfbWriteMode_t mode, GrColorFormat_t lanes, std::uint32_t data,
+                            GrAlpha_t constant_alpha, FxU16 constant_depth) {
+  glide_shim::LfbPixel pixel{0, 0, {0, 0, 0, constant_alpha}, constant_depth};
+  if (mode == GR_LFBWRITEMODE_ZA16) {
+    pixel.depth = static_cast<FxU16>(data & 0xFFFF);
+    return pixel;
+  }
+  if (mode_has_depth(mode)) pixel.depth = static_cast<FxU16>(data >> 16);
+  const ColorFields fields = color_fields(color_mode_of(mode), lanes);
+  pixel.color.r = widen(data, fields.r);
+  pixel.color.g = widen(data, fields.g);
+  pixel.color.b = widen(data, fields.b);
+  if (fields.a.bits != 0) pixel.color.a = widen(data, fields.a);
+  return pixel;
+}
+
+// The data word that stands for a stored 565 colour and depth code in a mode's layout (alpha
+// full), so a pixel a write lock's program leaves alone is recognised as unchanged.
+std::uint32_t encode(GrLfbWriteMode_t mode, GrColorFormat_t lanes, std::uint16_t word, FxU16 code) {
+  if (mode == GR_LFBWRITEMODE_ZA16) return code;
+  const ColorFields fields = color_fields(color_mode_of(mode), lanes);
+  const Field stored_r{11, 5}, stored_g{5, 6}, stored_b{0, 5};
+  auto put = [](std::uint8_t value, Field field) {
+    return field.bits == 0 ? 0u : static_cast<std::uint32_t>(value >> (8 - field.bits)) << field.shift;
+  };
+  std::uint32_t data = put(widen(word, stored_r), fields.r) | put(widen(word, stored_g), fields.g) |
+                       put(widen(word, stored_b), fields.b) | put(0xFF, fields.a);
+  if (mode_has_depth(mode)) data |= static_cast<std::uint32_t>(code) << 16;
+  return data;
+}
+
+std::uint16_t to_565(const glide_shim::Rgba8 &color) {  // truncation: direct writes do not dither
+  return static_cast<std::uint16_t>((color.r >> 3) << 11 | (color.g >> 2) << 5 | (color.b >> 3));
+}
+
+std::uint32_t load(const std::uint8_t *p, int bytes) {
+  if (bytes == 2) {
+    std::uint16_t word;
+    std::memcpy(&word, p, 2);
+    return word;
+  }
+  std::uint32_t word;
+  std::memcpy(&word, p, 4);
+  return word;
+}
+void store(std::uint32_t value, std::uint8_t *p, int bytes) {
+  if (bytes == 2) {
+    const auto word = static_cast<std::uint16_t>(value);
+    std::memcpy(p, &word, 2);
+  } else {
+    std::memcpy(p, &value, 4);
+  }
+}
+
+// grLfbWriteColorSwizzle on one pixel's data (MAME's internal_lfb_w: the 32-bit bus word is
+// byte-swizzled, then its 16-bit halves swapped). A 16-bit pixel shares its bus word with pixel
+// x ^ 1 of its row, so the swizzle reverses its two bytes and, alone or with the swap alone, moves
+// the data to that partner; both together swizzle it in place. Both steps undo themselves.
+std::uint32_t swizzled(std::uint32_t data, int bytes, const glide_shim::LfbWriteLayout &layout) {
+  if (bytes == 2) {
+    return layout.swizzle_bytes ? ((data & 0xFF) << 8 | (data >> 8 & 0xFF)) : data;
+  }
+  if (layout.swizzle_bytes) {
+    data = (data & 0xFF) << 24 | (data & 0xFF00) << 8 | (data >> 8 & 0xFF00) | data >> 24;
+  }
+  return layout.swap_words ? (data << 16 | data >> 16) : data;
+}
+int landing_x(int x, int bytes, const glide_shim::LfbWriteLayout &layout) {
+  return bytes == 2 && layout.swizzle_bytes != layout.swap_words ? x ^ 1 : x;
 }
 
 // Flips the rows of a whole-screen block (lower-left origin locks).
@@ -121,28 +209,38 @@ void flip_rows(std::vector<std::uint8_t> &bytes, std::size_t row_bytes, int heig
   }
 }
 
-// Writes the pixels of row `row` in [first, last) of a locked block back through the renderer.
-void write_span(GrBuffer_t buffer, GrLfbWriteMode_t mode, const std::uint8_t *row_bytes, int row,
-                int first, int last) {
+// Stores expanded pixels straight into the buffers, bypassing the pipeline: a block of `w`
+// columns starting at column `x`, of which only those `written` marks change; rows from `y` down.
+void write_direct(GrBuffer_t buffer, bool color, bool depth, int x, int y, int w, int h,
+                  const std::vector<glide_shim::LfbPixel> &block, const std::vector<bool> &written) {
   auto &ctx = current();
-  const int bytes = write_mode_bytes(mode), n = last - first;
-  std::vector<std::uint16_t> words(static_cast<std::size_t>(n));
-  std::vector<float> depths(static_cast<std::size_t>(n));
   const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
-  for (int i = 0; i < n; ++i) {
-    const std::uint8_t *p = row_bytes + static_cast<std::size_t>((first + i) * bytes);
-    if (mode_has_color(mode)) words[static_cast<std::size_t>(i)] = to_565(color_format_of(mode), p);
-    if (mode_has_depth(mode)) {
-      std::uint16_t code;
-      std::memcpy(&code, mode_has_color(mode) ? p + 2 : p, 2);
-      depths[static_cast<std::size_t>(i)] = static_cast<float>(glide_shim::gl_depth_from_code(code, w_buffer));
+  int first = 0;
+  while (first < w) {
+    if (!written[static_cast<std::size_t>(first)]) {
+      ++first;
+      continue;
     }
+    int end = first + 1;
+    while (end < w && written[static_cast<std::size_t>(end)]) ++end;
+    const int run = end - first;
+    std::vector<std::uint16_t> words(static_cast<std::size_t>(run * h));
+    std::vector<float> depths(static_cast<std::size_t>(run * h));
+    for (int row = 0; row < h; ++row) {
+      for (int col = 0; col < run; ++col) {
+        const glide_shim::LfbPixel &pixel = block[static_cast<std::size_t>(row * w + first + col)];
+        const auto i = static_cast<std::size_t>(row * run + col);
+        words[i] = to_565(pixel.color);
+        depths[i] = static_cast<float>(glide_shim::gl_depth_from_code(pixel.depth, w_buffer));
+      }
+    }
+    if (color) {
+      ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), x + first, y, run, h,
+                                words.data(), static_cast<std::size_t>(run) * 2);
+    }
+    if (depth) ctx.renderer->write_depth(x + first, y, run, h, depths.data());
+    first = end;
   }
-  if (mode_has_color(mode)) {
-    ctx.renderer->write_color(ctx.renderer->buffer_index(buffer), first, row, n, 1, words.data(),
-                              static_cast<std::size_t>(n) * 2);
-  }
-  if (mode_has_depth(mode)) ctx.renderer->write_depth(first, row, n, 1, depths.data());
 }
 
 }  // namespace
@@ -180,9 +278,10 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
     ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbLock: this lock type is already held");
     return FXFALSE;
   }
-  if (!reading && pixelPipeline != FXFALSE) {
+  if (!reading && pixelPipeline != FXFALSE && ctx.texture_target.active) {
     ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
-               "grLfbLock: writes through the pixel pipeline are not implemented yet");
+               "grLfbLock: writes through the pixel pipeline are not available while "
+               "glideShimRenderToTexture is active");
     return FXFALSE;
   }
   // ANY means 565 colour, or ZA16 for the aux buffer; ZA16 writes depth whichever buffer is
@@ -214,18 +313,25 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
     info->origin = origin;
     return FXTRUE;
   }
-  // A write lock starts from the buffers' contents in the lock's format, so pixels the program
-  // skips are recognised as unchanged at the unlock and survive as they are.
+  // A write lock starts from the buffers' contents in the lock's format and write layout, so
+  // pixels the program skips are recognised as unchanged at the unlock and survive as they are.
   const int bytes = write_mode_bytes(mode);
   std::vector<std::uint16_t> colors(mode_has_color(mode) ? count : 0), codes(mode_has_depth(mode) ? count : 0);
   if (mode_has_color(mode)) read_words(buffer, 0, 0, w, h, colors.data(), static_cast<std::size_t>(w) * 2);
   if (mode_has_depth(mode)) read_words(GR_BUFFER_AUXBUFFER, 0, 0, w, h, codes.data(), static_cast<std::size_t>(w) * 2);
+  const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
   std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels;
   pixels.assign(count * static_cast<std::size_t>(bytes), 0);
-  for (std::size_t i = 0; i < count; ++i) {
-    std::uint8_t *p = pixels.data() + i * static_cast<std::size_t>(bytes);
-    if (mode_has_color(mode)) encode_color(color_format_of(mode), colors[i], p);
-    if (mode_has_depth(mode)) std::memcpy(mode_has_color(mode) ? p + 2 : p, &codes[i], 2);
+  for (int row = 0; row < h; ++row) {
+    for (int slot = 0; slot < w; ++slot) {
+      // The slot shows the pixel its data would land on (itself unless the swizzle moves it).
+      const int landing = landing_x(slot, bytes, layout);
+      const auto i = static_cast<std::size_t>(row * w + (landing < w ? landing : slot));
+      const std::uint32_t data = encode(mode, layout.color_format, mode_has_color(mode) ? colors[i] : 0,
+                                        mode_has_depth(mode) ? codes[i] : 0);
+      store(swizzled(data, bytes, layout),
+            pixels.data() + static_cast<std::size_t>(row * w + slot) * static_cast<std::size_t>(bytes), bytes);
+    }
   }
   const std::size_t row_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(bytes);
   if (origin == GR_ORIGIN_LOWER_LEFT) flip_rows(pixels, row_bytes, h);
@@ -234,6 +340,10 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
   ctx.lfb.write_buffer = buffer;
   ctx.lfb.write_origin = origin;
   ctx.lfb.write_mode = mode;
+  ctx.lfb.write_pipeline = pixelPipeline != FXFALSE;
+  // The driver loads zaColor with the constant depth and alpha at the lock (glfb.c).
+  ctx.lfb.write_alpha = ctx.lfb.constant_alpha;
+  ctx.lfb.write_depth = ctx.lfb.constant_depth;
   info->lfbPtr = pixels.data();
   info->strideInBytes = static_cast<FxU32>(row_bytes);
   info->writeMode = mode;
@@ -255,31 +365,50 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
     const int bytes = write_mode_bytes(mode);
     const std::size_t row_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(bytes);
     std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels, &original = ctx.lfb.write_original;
+    ctx.lfb.write_locked = false;
+    if (ctx.lfb.write_pipeline && ctx.texture_target.active) {
+      ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
+                 "grLfbUnlock: glideShimRenderToTexture started during a pixel-pipeline write "
+                 "lock; its pixels were not written");
+      return FXFALSE;
+    }
     if (ctx.lfb.write_origin == GR_ORIGIN_LOWER_LEFT) {
       flip_rows(pixels, row_bytes, h);
       flip_rows(original, row_bytes, h);
     }
-    // Only runs of pixels the program changed go back, so drawing done while the lock was held
-    // survives, and untouched depth keeps its full precision.
+    // Only pixels the program changed go back, so drawing done while the lock was held
+    // survives, and untouched depth keeps its full precision. The write layout in effect now
+    // decodes them; the constant alpha and depth are the lock's.
+    const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
+    std::vector<glide_shim::LfbPixel> written, row_pixels(static_cast<std::size_t>(w));
+    std::vector<bool> row_written(static_cast<std::size_t>(w));
     for (int row = 0; row < h; ++row) {
       const std::uint8_t *line = pixels.data() + static_cast<std::size_t>(row) * row_bytes;
       const std::uint8_t *was = original.data() + static_cast<std::size_t>(row) * row_bytes;
-      int x = 0;
-      while (x < w) {
-        auto changed = [&](int px) {
-          return std::memcmp(line + px * bytes, was + px * bytes, static_cast<std::size_t>(bytes)) != 0;
-        };
-        if (!changed(x)) {
-          ++x;
-          continue;
-        }
-        int end = x + 1;
-        while (end < w && changed(end)) ++end;
-        write_span(buffer, mode, line, row, x, end);
-        x = end;
+      std::fill(row_written.begin(), row_written.end(), false);
+      bool any = false;
+      for (int slot = 0; slot < w; ++slot) {
+        const std::size_t offset = static_cast<std::size_t>(slot * bytes);
+        if (std::memcmp(line + offset, was + offset, static_cast<std::size_t>(bytes)) == 0) continue;
+        const int x = landing_x(slot, bytes, layout);
+        if (x >= w) continue;  // a 16-bit pixel's partner beyond an odd-width row
+        glide_shim::LfbPixel pixel = expand(mode, layout.color_format, swizzled(load(line + offset, bytes), bytes, layout),
+                                            ctx.lfb.write_alpha, ctx.lfb.write_depth);
+        pixel.x = x, pixel.row = row;
+        row_pixels[static_cast<std::size_t>(x)] = pixel;
+        row_written[static_cast<std::size_t>(x)] = true;
+        any = true;
+      }
+      if (!any) continue;
+      if (!ctx.lfb.write_pipeline) {
+        write_direct(buffer, mode_has_color(mode), mode_has_depth(mode), 0, row, w, 1, row_pixels, row_written);
+        continue;
+      }
+      for (int x = 0; x < w; ++x) {
+        if (row_written[static_cast<std::size_t>(x)]) written.push_back(row_pixels[static_cast<std::size_t>(x)]);
       }
     }
-    ctx.lfb.write_locked = false;
+    if (ctx.lfb.write_pipeline) glide_shim::write_through_pipeline(ctx, buffer, mode_has_color(mode), written);
     return FXTRUE;
   }
   ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbUnlock: no such lock is held");
@@ -363,37 +492,59 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
                                                " is less than one row of pixels");
     return FXFALSE;
   }
-  const std::size_t count = static_cast<std::size_t>(src_width) * src_height;
-  std::vector<std::uint16_t> words(count);
-  std::vector<float> depths(depth ? count : 0);
-  const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
-  // The 32-bit colour-and-depth formats hold the colour word low and the depth code high.
-  const GrLfbSrcFmt_t color_format = src_format == GR_LFB_SRC_FMT_565_DEPTH   ? GR_LFB_SRC_FMT_565
-                                     : src_format == GR_LFB_SRC_FMT_555_DEPTH ? GR_LFB_SRC_FMT_555
-                                     : src_format == GR_LFB_SRC_FMT_1555_DEPTH ? GR_LFB_SRC_FMT_1555
-                                                                                : src_format;
+  // The SST-1 driver's grLfbWriteRegion is a write lock without the pipeline, so the write
+  // layout (lanes, swizzle, swap) decodes the data as it does a lock's; the constant alpha and
+  // depth play no part in a direct write.
+  const auto mode = static_cast<GrLfbWriteMode_t>(src_format);
+  const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
+  const int width = ctx.display.width, x = static_cast<int>(dst_x);
+  const int w = static_cast<int>(src_width), h = static_cast<int>(src_height);
+  // Each source column lands on one frame-buffer column; the swizzle can move a 16-bit column to
+  // its partner, one beyond either end of the region.
+  std::vector<int> landing(static_cast<std::size_t>(w));
+  int first = width, last = -1;
+  for (int col = 0; col < w; ++col) {
+    const int lands = landing_x(x + col, bytes_per_pixel, layout);
+    landing[static_cast<std::size_t>(col)] = lands;
+    if (lands < width) first = std::min(first, lands), last = std::max(last, lands);
+  }
+  if (last < first) return FXTRUE;  // a single column that lands beyond an odd-width row
+  const int span = last - first + 1;
+  std::vector<glide_shim::LfbPixel> block(static_cast<std::size_t>(span * h));
+  std::vector<bool> written(static_cast<std::size_t>(span), false);
   const auto *in = static_cast<const std::uint8_t *>(src_data);
-  for (FxU32 row = 0; row < src_height; ++row) {
-    for (FxU32 col = 0; col < src_width; ++col) {
+  for (int row = 0; row < h; ++row) {
+    for (int col = 0; col < w; ++col) {
+      const int lands = landing[static_cast<std::size_t>(col)];
+      if (lands >= width) continue;
       const std::uint8_t *p = in + static_cast<std::size_t>(row) * static_cast<std::size_t>(src_stride) +
                               static_cast<std::size_t>(col) * static_cast<std::size_t>(bytes_per_pixel);
-      const std::size_t i = static_cast<std::size_t>(row) * src_width + col;
-      if (color) words[i] = to_565(color_format, p);
-      if (depth) {
-        std::uint16_t code;
-        std::memcpy(&code, color ? p + 2 : p, 2);
-        depths[i] = static_cast<float>(glide_shim::gl_depth_from_code(code, w_buffer));
-      }
+      block[static_cast<std::size_t>(row * span + lands - first)] =
+          expand(mode, layout.color_format, swizzled(load(p, bytes_per_pixel), bytes_per_pixel, layout),
+                 ctx.lfb.constant_alpha, ctx.lfb.constant_depth);
+      written[static_cast<std::size_t>(lands - first)] = true;
     }
   }
-  const int x = static_cast<int>(dst_x), y = static_cast<int>(dst_y);
-  const int w = static_cast<int>(src_width), h = static_cast<int>(src_height);
-  if (color) {
-    ctx.renderer->write_color(ctx.renderer->buffer_index(dst_buffer), x, y, w, h, words.data(),
-                              static_cast<std::size_t>(src_width) * 2);
-  }
-  if (depth) ctx.renderer->write_depth(x, y, w, h, depths.data());
+  write_direct(dst_buffer, color, depth, first, static_cast<int>(dst_y), span, h, block, written);
   return FXTRUE;
+}
+
+void grLfbWriteColorFormat(GrColorFormat_t colorFormat) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbWriteColorFormat")) return;
+  if (colorFormat < GR_COLORFORMAT_ARGB || colorFormat > GR_COLORFORMAT_BGRA) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               "grLfbWriteColorFormat: unknown colour format " + std::to_string(colorFormat));
+    return;
+  }
+  ctx.lfb.layout.color_format = colorFormat;
+}
+
+void grLfbWriteColorSwizzle(FxBool swizzleBytes, FxBool swapWords) {
+  auto &ctx = current();
+  if (!ctx.require_open("grLfbWriteColorSwizzle")) return;
+  ctx.lfb.layout.swizzle_bytes = swizzleBytes != FXFALSE;
+  ctx.lfb.layout.swap_words = swapWords != FXFALSE;
 }
 
 void grLfbConstantAlpha(GrAlpha_t alpha) {

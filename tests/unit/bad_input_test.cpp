@@ -1121,11 +1121,13 @@ TEST_F(BadInputTest, UnlockWithoutLockIsInconsistent) {
   EXPECT_EQ(pixel(0, 0), 0xF81F);
 }
 
-TEST_F(BadInputTest, WriteLockThroughThePixelPipelineIsUnsupported) {
+TEST_F(BadInputTest, PipelineWriteLockWhileRenderingToATextureIsUnsupported) {
   GrLfbInfo_t info = fresh_info();
+  ASSERT_EQ(glideShimRenderToTexture(GR_TMU0, 0, GR_LOD_64), FXTRUE) << glideShimGetLastErrorMessage();
   expect_rejected(GLIDESHIM_ERR_UNSUPPORTED,
                   {"grLfbLock", [&] { EXPECT_EQ(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER, GR_LFBWRITEMODE_565, GR_ORIGIN_UPPER_LEFT, FXTRUE, &info), FXFALSE); }},
-                  "pixel pipeline");
+                  "pixel pipeline while rendering to a texture");
+  glideShimRenderToFrameBuffer();
   expect_rejected(GLIDESHIM_ERR_INVALID_ENUM,
                   {"grLfbLock", [&] { EXPECT_EQ(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_AUXBUFFER, GR_LFBWRITEMODE_8888, GR_ORIGIN_UPPER_LEFT, FXFALSE, &info), FXFALSE); }},
                   "colour mode on the aux buffer");
