@@ -47,13 +47,6 @@ struct ColorPathState {
   CombineUnit color;
   CombineUnit alpha;
   GrColor_t constant_color;  // in the window's colour format (ARGB or ABGR)
-  // grAlphaControlsITRGBLighting: the colour unit's local is the constant colour where the
-  // TMU output's alpha has bit 7 set, else the iterated RGB (fbzColorPath bit 7).
-  bool alpha_controls_itrgb;
-  // The guColorCombineFunction *_DELTA0 presets: the RGB iterators hold the grConstantColorValue4
-  // colour with zero slopes, so every pixel's iterated RGB is that colour (gc->state.r/g/b).
-  bool delta0;
-  float iterated4[4];  // grConstantColorValue4's a, r, g, b, 0..255
 };
 
 struct BlendState {
@@ -128,9 +121,6 @@ struct TmuState {
   // Without multibase every level uses base[0], which grTexSource sets.
   std::int64_t base[4];
   TexCombineUnit combine;
-  // grTexDetailControl as the tDetail register holds it: the LOD below which detail appears
-  // (signed, whole LODs), the shift of (bias - LOD) and the largest factor (0..255).
-  int detail_bias, detail_scale, detail_max;
   TextureSource source;
   TextureTables tables;
   std::vector<std::uint8_t> memory;  // the TMU's texture RAM; downloads write raw bytes here
@@ -189,19 +179,6 @@ struct ErrorState {
   std::string message;
 };
 
-// The gu texture manager (guTexAllocateMemory and friends, gu_texture_manager.cpp): digutex.c's
-// mip-map table, the TMU's free-memory pointer and guTexSource's NCC-table bookkeeping.
-// grSstWinOpen empties it, as the driver's grSstWinOpen calls guTexMemReset.
-struct GuTextureManager {
-  std::vector<GrMipMapInfo> records;  // MAX_MIPMAPS_PER_SST entries, indexed by id; never moved
-  FxU32 next_id = 0;                  // ids below this are allocated (the driver's free_mmid)
-  FxU32 free_base = 0;                // first free byte of TMU memory (freemem_base)
-  GrMipMapId_t current = GR_NULL_MIPMAP_HANDLE;  // the id guTexSource last selected
-  GrMipMapId_t ncc_owner[2] = {GR_NULL_MIPMAP_HANDLE, GR_NULL_MIPMAP_HANDLE};  // per NCC table
-  GrNCCTable_t next_ncc_table = GR_NCCTABLE_NCC0;  // where the next id's NCC table goes
-  void reset();  // guTexMemReset: every id freed, all TMU memory free
-};
-
 constexpr FxU32 kTmuMemoryBytes = 2u * 1024u * 1024u;  // one Voodoo 1 TMU
 constexpr int kMaxScreenSide = 2048;
 
@@ -222,7 +199,6 @@ class GlideContext {
   FogState fog{};
   PerfStatsState perf{};
   TextureTarget texture_target{};
-  GuTextureManager gu_textures{};
   bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;
