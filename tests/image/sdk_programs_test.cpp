@@ -59,7 +59,7 @@ TEST_P(SdkProgram, EveryFrameOfALoopIsTheSame) {
 
 INSTANTIATE_TEST_SUITE_P(Programs, SdkProgram,
                          ::testing::Values("fog_ramp", "polygon_fans", "state_round_trip",
-                                           "lfb_formats", "aa_lines"));
+                                           "lfb_formats", "aa_lines", "lfb_pipeline"));
 
 TEST(SdkStateRoundTrip, RestoredPanelEqualsTheSavedOne) {
   // The right panel is drawn after grGlideSetState restored the left panel's state: the two
