@@ -154,6 +154,24 @@ TEST_F(LfbPipelineTest, DepthIsWrittenPerTheMaskAndIgnoresTheDepthBias) {
   expect_no_error();
 }
 
+TEST_F(LfbPipelineTest, WBufferCodesAreTestedAndWrittenAsCodes) {
+  // In W-buffer mode the written code is a W code: LESS keeps codes below the stored one.
+  grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+  grDepthBufferFunction(GR_CMP_LESS);
+  grDepthMask(FXTRUE);
+  grBufferClear(0, 0, 0x9000);
+  const FxU16 codes[4] = {0x1234, 0x8FFF, 0x9001, 0xF000};
+  pipeline_write(GR_LFBWRITEMODE_565_DEPTH, [&](std::uint8_t *base, FxU32 stride) {
+    for (int x = 0; x < 4; ++x) put32(base, stride, x, 0, FxU32{codes[x]} << 16 | 0xFFFF);
+  });
+  for (int x = 0; x < 4; ++x) {
+    const bool kept = codes[x] < 0x9000;
+    EXPECT_EQ(pixel(x, 0), kept ? 0xFFFF : 0) << std::hex << codes[x];
+    EXPECT_EQ(pixel(x, 0, GR_BUFFER_AUXBUFFER), kept ? codes[x] : 0x9000) << std::hex << codes[x];
+  }
+  expect_no_error();
+}
+
 // ---- alpha ---------------------------------------------------------------------------------------
 
 TEST_F(LfbPipelineTest, ConstantAlphaBlendsModesWithoutAlphaAndTheDataAlphaOthers) {
