@@ -373,7 +373,8 @@ void GlRenderer::draw_counting_stages(const ShaderProgram *program, const Pipeli
   const ShaderProgram *chroma_program = key.chroma_key ? program_for(chroma_only) : nullptr;
   if (untested_program == nullptr || (key.chroma_key && chroma_program == nullptr)) return;
   const bool depth_test = context_.depth.mode != GR_DEPTHBUFFER_DISABLE;
-  const int per_primitive = primitive_ == Primitive::Triangles ? 3 : primitive_ == Primitive::Lines ? 2 : 1;
+  const int per_primitive = disjoint_ ? static_cast<int>(queue_.size())
+                            : primitive_ == Primitive::Triangles ? 3 : primitive_ == Primitive::Lines ? 2 : 1;
   GrSstPerfStats_t &counts = context_.perf.counts;
   for (int first = 0; first + per_primitive <= static_cast<int>(queue_.size()); first += per_primitive) {
     gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -448,6 +449,12 @@ void GlRenderer::end_plain_gl() {
   gl.glBindTexture(GL_TEXTURE_2D, 0);
   gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
   gl.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void GlRenderer::flush_disjoint() {
+  disjoint_ = true;
+  flush();
+  disjoint_ = false;
 }
 
 void GlRenderer::start_counting() {

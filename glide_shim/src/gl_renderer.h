@@ -69,6 +69,10 @@ class GlRenderer {
   void *proc_address(const char *name) const { return backend_->proc_address(name); }
 
   void start_counting();
+  // Draws the queue now, as flush() does, for primitives that never overlap one another (an LFB
+  // write's one point per pixel): the perf counters' stages then count the whole queue in one
+  // pass each, which gives the counts one primitive at a time would.
+  void flush_disjoint();
   std::uint32_t pixels_counted() const { return pixels_counted_; }
 
  private:
@@ -104,6 +108,7 @@ class GlRenderer {
   bool counting_ = false;
   unsigned query_ = 0;
   std::uint32_t pixels_counted_ = 0;
+  bool disjoint_ = false;  // flush_disjoint is drawing
 };
 
 }  // namespace glide_shim

@@ -80,7 +80,7 @@ void write_through_pipeline(GlideContext &context, GrBuffer_t buffer, bool write
     if (fog_source == GR_FOG_WITH_ITERATED_Z) v.fog = static_cast<float>(pixel.depth);
   }
   renderer.queue(Primitive::Points, points.data(), static_cast<int>(points.size()));
-  renderer.flush();
+  renderer.flush_disjoint();  // no two points share a pixel
 }
 
 }  // namespace glide_shim
