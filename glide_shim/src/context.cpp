@@ -52,6 +52,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
                 GR_MIPMAPLEVELMASK_BOTH};
   tmu.tables = TextureTables{};  // palette and NCC tables all zero, NCC table 0 selected
   tmu.memory.assign(kTmuMemoryBytes, 0);
+  gu_textures.reset();  // the driver's grSstWinOpen calls guTexMemReset
 
   display.open = true;
   display.width = width;

@@ -179,6 +179,19 @@ struct ErrorState {
   std::string message;
 };
 
+// The gu texture manager (guTexAllocateMemory and friends, gu_texture_manager.cpp): digutex.c's
+// mip-map table, the TMU's free-memory pointer and guTexSource's NCC-table bookkeeping.
+// grSstWinOpen empties it, as the driver's grSstWinOpen calls guTexMemReset.
+struct GuTextureManager {
+  std::vector<GrMipMapInfo> records;  // MAX_MIPMAPS_PER_SST entries, indexed by id; never moved
+  FxU32 next_id = 0;                  // ids below this are allocated (the driver's free_mmid)
+  FxU32 free_base = 0;                // first free byte of TMU memory (freemem_base)
+  GrMipMapId_t current = GR_NULL_MIPMAP_HANDLE;  // the id guTexSource last selected
+  GrMipMapId_t ncc_owner[2] = {GR_NULL_MIPMAP_HANDLE, GR_NULL_MIPMAP_HANDLE};  // per NCC table
+  GrNCCTable_t next_ncc_table = GR_NCCTABLE_NCC0;  // where the next id's NCC table goes
+  void reset();  // guTexMemReset: every id freed, all TMU memory free
+};
+
 constexpr FxU32 kTmuMemoryBytes = 2u * 1024u * 1024u;  // one Voodoo 1 TMU
 constexpr int kMaxScreenSide = 2048;
 
@@ -199,6 +212,7 @@ class GlideContext {
   FogState fog{};
   PerfStatsState perf{};
   TextureTarget texture_target{};
+  GuTextureManager gu_textures{};
   bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;

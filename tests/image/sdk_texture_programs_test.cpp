@@ -1,6 +1,6 @@
 // The texture chapter's one-feature Glide programs of tests/sdk (mip_levels, palette_texture,
-// load_3df: plain C, public headers only), run as a user would from the directory holding their
-// .3df files, each frame captured by GLIDESHIM_DUMP_DIR and compared with
+// load_3df, gu_texture_manager: plain C, public headers only), run as a user would from the
+// directory holding their .3df files, each frame captured by GLIDESHIM_DUMP_DIR and compared with
 // reference_images/sdk_<name>.png. Tolerance as the other image tests.
 #include "image_compare.h"
 
@@ -55,6 +55,7 @@ TEST_P(SdkTextureProgram, EveryFrameOfALoopIsTheSame) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Programs, SdkTextureProgram,
-                         ::testing::Values("mip_levels", "palette_texture", "load_3df"));
+                         ::testing::Values("mip_levels", "palette_texture", "load_3df",
+                                           "gu_texture_manager"));
 
 }  // namespace
