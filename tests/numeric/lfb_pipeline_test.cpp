@@ -384,15 +384,16 @@ Layout layout_of(GrLfbWriteMode_t mode, GrColorFormat_t lanes) {
   const bool alpha_low = lanes == GR_COLORFORMAT_RGBA || lanes == GR_COLORFORMAT_BGRA;
   switch (mode) {
     case GR_LFBWRITEMODE_565: return blue_high ? Layout{0, 5, 11, 0, 5, 6, 0} : Layout{11, 5, 0, 0, 5, 6, 0};
-    case GR_LFBWRITEMODE_1555: {
-      const int o = alpha_low ? 1 : 0;
-      return blue_high ? Layout{o, o + 5, o + 10, alpha_low ? 0 : 15, 5, 5, 1}
-                       : Layout{o + 10, o + 5, o, alpha_low ? 0 : 15, 5, 5, 1};
+    case GR_LFBWRITEMODE_555:
+    case GR_LFBWRITEMODE_1555: {  // 555's spare bit sits where 1555's alpha does
+      const int o = alpha_low ? 1 : 0, bits_a = mode == GR_LFBWRITEMODE_1555 ? 1 : 0;
+      return blue_high ? Layout{o, o + 5, o + 10, alpha_low ? 0 : 15, 5, 5, bits_a}
+                       : Layout{o + 10, o + 5, o, alpha_low ? 0 : 15, 5, 5, bits_a};
     }
-    default: {  // 8888
-      const int o = alpha_low ? 8 : 0;
-      return blue_high ? Layout{o, o + 8, o + 16, alpha_low ? 0 : 24, 8, 8, 8}
-                       : Layout{o + 16, o + 8, o, alpha_low ? 0 : 24, 8, 8, 8};
+    default: {  // 888 and 8888
+      const int o = alpha_low ? 8 : 0, bits_a = mode == GR_LFBWRITEMODE_8888 ? 8 : 0;
+      return blue_high ? Layout{o, o + 8, o + 16, alpha_low ? 0 : 24, 8, 8, bits_a}
+                       : Layout{o + 16, o + 8, o, alpha_low ? 0 : 24, 8, 8, bits_a};
     }
   }
 }
@@ -404,8 +405,9 @@ FxU32 place(GrLfbWriteMode_t mode, GrColorFormat_t lanes, int r, int g, int b, i
 
 TEST_F(LfbPipelineTest, EveryLaneOrderGivesTheSamePictureForItsOwnData) {
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);  // alpha shows
-  for (GrLfbWriteMode_t mode : {GR_LFBWRITEMODE_565, GR_LFBWRITEMODE_1555, GR_LFBWRITEMODE_8888}) {
-    const int bytes = mode == GR_LFBWRITEMODE_8888 ? 4 : 2;
+  for (GrLfbWriteMode_t mode : {GR_LFBWRITEMODE_565, GR_LFBWRITEMODE_555, GR_LFBWRITEMODE_1555,
+                                 GR_LFBWRITEMODE_888, GR_LFBWRITEMODE_8888}) {
+    const int bytes = mode == GR_LFBWRITEMODE_888 || mode == GR_LFBWRITEMODE_8888 ? 4 : 2;
     std::vector<FxU16> reference;
     for (GrColorFormat_t lanes : {GR_COLORFORMAT_ARGB, GR_COLORFORMAT_ABGR, GR_COLORFORMAT_RGBA, GR_COLORFORMAT_BGRA}) {
       grLfbWriteColorFormat(lanes);
@@ -487,6 +489,19 @@ TEST_F(LfbPipelineTest, ByteSwizzleAndWordSwapReorderTheWrittenData) {
   ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 7, 2, GR_LFB_SRC_FMT_565, 1, 1, 2, const_cast<FxU16 *>(&one)));
   EXPECT_EQ(pixel(6, 2), one);
   EXPECT_EQ(pixel(7, 2), 0);
+  expect_no_error();
+}
+
+TEST_F(LfbPipelineTest, WindowOpensWithArgbLanesAndNoSwizzle) {
+  // grSstWinOpen zeroes lfbMode (gsst.c), whatever the window's colour format.
+  const glide_shim::LfbWriteLayout &layout = glide_shim::current().lfb.layout;
+  EXPECT_EQ(layout.color_format, GR_COLORFORMAT_ARGB);
+  EXPECT_FALSE(layout.swizzle_bytes);
+  EXPECT_FALSE(layout.swap_words);
+  grLfbWriteColorFormat(GR_COLORFORMAT_BGRA);
+  grSstWinClose();
+  ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ABGR, GR_ORIGIN_UPPER_LEFT, 2, 1));
+  EXPECT_EQ(glide_shim::current().lfb.layout.color_format, GR_COLORFORMAT_ARGB);
   expect_no_error();
 }
 
