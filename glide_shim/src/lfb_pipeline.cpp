@@ -33,8 +33,11 @@ class PipelineState {
       context.depth.mode = GR_DEPTHBUFFER_ZBUFFER;
       context.depth.function = GR_CMP_ALWAYS;
     }
-    context.raster.render_buffer = buffer;
-    if (!write_color) context.raster.rgb_mask = false;
+    if (write_color) {
+      context.raster.render_buffer = buffer;
+    } else {
+      context.raster.rgb_mask = false;  // ZA16 carries no colour; it may name the aux buffer
+    }
   }
   ~PipelineState() {
     context_.color_path = color_path_;

@@ -172,6 +172,26 @@ TEST_F(LfbPipelineTest, WBufferCodesAreTestedAndWrittenAsCodes) {
   expect_no_error();
 }
 
+TEST_F(LfbPipelineTest, Za16PipelineWritesDepthOnlyThroughTheDepthTest) {
+  grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER);
+  grDepthBufferFunction(GR_CMP_LESS);
+  grDepthMask(FXTRUE);
+  grBufferClear(0x00FFFFFFu, 0, 0x8000);
+  GrLfbInfo_t info{};
+  info.size = sizeof info;
+  ASSERT_TRUE(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_AUXBUFFER, GR_LFBWRITEMODE_ANY, GR_ORIGIN_UPPER_LEFT, FXTRUE, &info))
+      << glideShimGetLastErrorMessage();
+  EXPECT_EQ(info.writeMode, GR_LFBWRITEMODE_ZA16);
+  put16(static_cast<std::uint8_t *>(info.lfbPtr), info.strideInBytes, 0, 0, 0x7000);  // in front
+  put16(static_cast<std::uint8_t *>(info.lfbPtr), info.strideInBytes, 1, 0, 0x9000);  // behind
+  ASSERT_TRUE(grLfbUnlock(GR_LFB_WRITE_ONLY, GR_BUFFER_AUXBUFFER)) << glideShimGetLastErrorMessage();
+  EXPECT_EQ(pixel(0, 0, GR_BUFFER_AUXBUFFER), 0x7000);
+  EXPECT_EQ(pixel(1, 0, GR_BUFFER_AUXBUFFER), 0x8000);
+  EXPECT_EQ(pixel(0, 0), 0xFFFF) << "no colour is written";
+  EXPECT_EQ(pixel(0, 0, GR_BUFFER_FRONTBUFFER), 0) << "no colour is written";
+  expect_no_error();
+}
+
 // ---- alpha ---------------------------------------------------------------------------------------
 
 TEST_F(LfbPipelineTest, ConstantAlphaBlendsModesWithoutAlphaAndTheDataAlphaOthers) {
