@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <ostream>
 #include <random>
 #include <set>
 #include <string>
@@ -30,6 +31,9 @@ struct MipMapCase {
   GrTextureFilterMode_t min_filter, mag_filter;
   float bias;
 };
+
+// Test failures name the case, not its bytes.
+void PrintTo(const MipMapCase &c, std::ostream *out) { *out << c.name; }
 
 std::size_t chain_texels(const MipMapCase &c) {
   std::size_t texels = 0;
