@@ -41,10 +41,11 @@ TEST(SampleProgram, ArticlePortRendersItsShadow) {
 }
 
 // demo/crate_3df.c, an SDK-style program, run as a user would from demo/data (where its .3df
-// textures are) for `frames` frames with the frame dump on. Returns the dump directory; the
-// program's output is in log.txt there, and its exit status in `status`.
-std::filesystem::path run_crate_3df(const std::string &arguments, int &status) {
-  const std::filesystem::path dir = std::filesystem::path(output_path("crate_3df"));
+// textures are) with the frame dump on into its own directory `run` (tests may run at once).
+// Returns that directory; the program's output is in log.txt there, its exit status in `status`.
+std::filesystem::path run_crate_3df(const std::string &run, const std::string &arguments,
+                                    int &status) {
+  const std::filesystem::path dir = std::filesystem::path(output_path("crate_3df_" + run));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string command = "cd " + std::string(DEMO_DATA_DIR) + " && GLIDESHIM_DUMP_DIR=" +
@@ -56,7 +57,7 @@ std::filesystem::path run_crate_3df(const std::string &arguments, int &status) {
 
 TEST(SampleProgram, Crate3dfRendersItsTexturesFromDotThreeDfFiles) {
   int status = -1;
-  const std::filesystem::path dir = run_crate_3df("-n 12", status);
+  const std::filesystem::path dir = run_crate_3df("frames", "-n 12", status);
   const std::string log = file_bytes((dir / "log.txt").string());
   ASSERT_EQ(status, 0) << log;
   EXPECT_NE(log.find("crate_3df: 12 frames at 640x480"), std::string::npos) << log;
@@ -70,7 +71,7 @@ TEST(SampleProgram, Crate3dfRendersItsTexturesFromDotThreeDfFiles) {
 
 TEST(SampleProgram, Crate3dfNamesATextureItCannotRead) {
   int status = -1;
-  const std::filesystem::path dir = run_crate_3df("-n 1 -d /nonexistent/textures", status);
+  const std::filesystem::path dir = run_crate_3df("missing_texture", "-n 1 -d /nonexistent/textures", status);
   const std::string log = file_bytes((dir / "log.txt").string());
   EXPECT_NE(status, 0);
   EXPECT_NE(log.find("/nonexistent/textures/crate.3df"), std::string::npos) << log;
