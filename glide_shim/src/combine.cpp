@@ -1,5 +1,6 @@
 // Chapter "color combine": the colour, alpha and texture combine units, the constant colour,
-// and the gu* shorthands that set them (mapped as 3dfx's gglide.c / gu*.c do).
+// the ITRGB lighting override, the delta0 iterated colour, and the preset shorthands that set
+// them (mapped as 3dfx's gglide.c / gu*.c do).
 #include "context.h"
 
 #include <string>
@@ -51,6 +52,42 @@ void set_unit(CombineUnit &target, const CombineUnit &unit) {
   target = unit;
 }
 
+// The GR_TEXTURECOMBINE_* presets, as gu.c maps them; `name` is the entry point reported.
+void texture_combine_preset(const char *name, GrChipID_t tmu, GrTextureCombineFnc_t function) {
+  struct Setting {
+    GrCombineFunction_t function;
+    GrCombineFactor_t factor;
+    FxBool invert;
+  };
+  static const Setting kSettings[] = {
+      /* ZERO */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, FXFALSE},
+      /* DECAL */ {GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, FXFALSE},
+      /* OTHER */ {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE, FXFALSE},
+      /* ADD */ {GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL, GR_COMBINE_FACTOR_ONE, FXFALSE},
+      /* MULTIPLY */ {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_LOCAL, FXFALSE},
+      /* SUBTRACT */ {GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL, GR_COMBINE_FACTOR_ONE, FXFALSE},
+      /* DETAIL */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_ONE_MINUS_DETAIL_FACTOR, FXFALSE},
+      /* DETAIL_OTHER */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_DETAIL_FACTOR, FXFALSE},
+      /* TRILINEAR_ODD */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_ONE_MINUS_LOD_FRACTION, FXFALSE},
+      /* TRILINEAR_EVEN */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_LOD_FRACTION, FXFALSE},
+      /* ONE */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, FXTRUE},
+  };
+  auto &ctx = current();
+  if (!ctx.require_open(name)) return;
+  if (tmu != GR_TMU0) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
+               std::string(name) + ": TMU " + std::to_string(tmu) + " does not exist (one TMU)");
+    return;
+  }
+  if (function < GR_TEXTURECOMBINE_ZERO || function > GR_TEXTURECOMBINE_ONE) {
+    ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
+               std::string(name) + ": unknown function " + std::to_string(function));
+    return;
+  }
+  const Setting &s = kSettings[function];
+  grTexCombine(tmu, s.function, s.factor, s.function, s.factor, s.invert, s.invert);
+}
+
 }  // namespace
 
 extern "C" {
@@ -100,6 +137,33 @@ void grConstantColorValue(GrColor_t value) {
   ctx.color_path.constant_color = value;
 }
 
+void grAlphaControlsITRGBLighting(FxBool enable) {
+  auto &ctx = current();
+  if (!ctx.require_open("grAlphaControlsITRGBLighting")) return;
+  if ((enable != FXFALSE) == ctx.color_path.alpha_controls_itrgb) return;
+  ctx.flush();
+  ctx.color_path.alpha_controls_itrgb = enable != FXFALSE;
+}
+
+void grConstantColorValue4(float a, float r, float g, float b) {
+  auto &ctx = current();
+  if (!ctx.require_open("grConstantColorValue4")) return;
+  for (float value : {a, r, g, b}) {
+    if (!(value >= 0.0f && value <= 255.0f)) {
+      ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grConstantColorValue4: " + std::to_string(value) +
+                                                 " is outside 0..255 (a, r, g, b)");
+      return;
+    }
+  }
+  // As gglide.c: kept as the delta0 colour, which the RGB iterators hold in delta0 mode; the
+  // constant colour (grConstantColorValue) is not changed.
+  ctx.flush();
+  ctx.color_path.iterated4[0] = a;
+  ctx.color_path.iterated4[1] = r;
+  ctx.color_path.iterated4[2] = g;
+  ctx.color_path.iterated4[3] = b;
+}
+
 void guColorCombineFunction(GrColorCombineFnc_t function) {
   struct Setting {
     GrCombineFunction_t function;
@@ -134,6 +198,13 @@ void guColorCombineFunction(GrColorCombineFnc_t function) {
     return;
   }
   const Setting &s = kSettings[function];
+  // gu.c leaves delta0 mode first, and the two *_DELTA0 presets enter it again.
+  const bool delta0 = function == GR_COLORCOMBINE_ITRGB_DELTA0 ||
+                      function == GR_COLORCOMBINE_TEXTURE_TIMES_ITRGB_DELTA0;
+  if (delta0 != current().color_path.delta0) {
+    current().flush();
+    current().color_path.delta0 = delta0;
+  }
   grColorCombine(s.function, s.factor, s.local, s.other, s.invert);
 }
 
@@ -163,38 +234,11 @@ void guAlphaSource(GrAlphaSource_t mode) {
 }
 
 void guTexCombineFunction(GrChipID_t tmu, GrTextureCombineFnc_t function) {
-  struct Setting {
-    GrCombineFunction_t function;
-    GrCombineFactor_t factor;
-    FxBool invert;
-  };
-  static const Setting kSettings[] = {
-      /* ZERO */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, FXFALSE},
-      /* DECAL */ {GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, FXFALSE},
-      /* OTHER */ {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE, FXFALSE},
-      /* ADD */ {GR_COMBINE_FUNCTION_SCALE_OTHER_ADD_LOCAL, GR_COMBINE_FACTOR_ONE, FXFALSE},
-      /* MULTIPLY */ {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_LOCAL, FXFALSE},
-      /* SUBTRACT */ {GR_COMBINE_FUNCTION_SCALE_OTHER_MINUS_LOCAL, GR_COMBINE_FACTOR_ONE, FXFALSE},
-      /* DETAIL */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_ONE_MINUS_DETAIL_FACTOR, FXFALSE},
-      /* DETAIL_OTHER */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_DETAIL_FACTOR, FXFALSE},
-      /* TRILINEAR_ODD */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_ONE_MINUS_LOD_FRACTION, FXFALSE},
-      /* TRILINEAR_EVEN */ {GR_COMBINE_FUNCTION_BLEND, GR_COMBINE_FACTOR_LOD_FRACTION, FXFALSE},
-      /* ONE */ {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, FXTRUE},
-  };
-  auto &ctx = current();
-  if (!ctx.require_open("guTexCombineFunction")) return;
-  if (tmu != GR_TMU0) {
-    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE,
-               "guTexCombineFunction: TMU " + std::to_string(tmu) + " does not exist (one TMU)");
-    return;
-  }
-  if (function < GR_TEXTURECOMBINE_ZERO || function > GR_TEXTURECOMBINE_ONE) {
-    current().report(GLIDESHIM_ERR_INVALID_ENUM,
-                     "guTexCombineFunction: unknown function " + std::to_string(function));
-    return;
-  }
-  const Setting &s = kSettings[function];
-  grTexCombine(tmu, s.function, s.factor, s.function, s.factor, s.invert, s.invert);
+  texture_combine_preset("guTexCombineFunction", tmu, function);
+}
+
+void grTexCombineFunction(GrChipID_t tmu, GrTextureCombineFnc_t function) {
+  texture_combine_preset("grTexCombineFunction", tmu, function);
 }
 
 }  // extern "C"

@@ -21,6 +21,9 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   color_path.alpha = {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
                       GR_COMBINE_LOCAL_NONE, GR_COMBINE_OTHER_CONSTANT, false};
   color_path.constant_color = 0xFFFFFFFFu;
+  color_path.alpha_controls_itrgb = false;
+  color_path.delta0 = false;
+  for (float &value : color_path.iterated4) value = 0.0f;
 
   blend = {GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO, GR_CMP_ALWAYS, 0};
   chroma = {GR_CHROMAKEY_DISABLE, 0};
@@ -44,6 +47,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   tmu.lod_bias = 0.0f;
   tmu.combine = {GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, GR_COMBINE_FUNCTION_ZERO,
                  GR_COMBINE_FACTOR_NONE, false, false};
+  tmu.detail_bias = tmu.detail_scale = tmu.detail_max = 0;
   tmu.allow_lod_dither = false;
   tmu.lod_dither = false;
   tmu.multibase = false;

@@ -47,6 +47,13 @@ struct ColorPathState {
   CombineUnit color;
   CombineUnit alpha;
   GrColor_t constant_color;  // in the window's colour format (ARGB or ABGR)
+  // grAlphaControlsITRGBLighting: the colour unit's local is the constant colour where the
+  // TMU output's alpha has bit 7 set, else the iterated RGB (fbzColorPath bit 7).
+  bool alpha_controls_itrgb;
+  // The guColorCombineFunction *_DELTA0 presets: the RGB iterators hold the grConstantColorValue4
+  // colour with zero slopes, so every pixel's iterated RGB is that colour (gc->state.r/g/b).
+  bool delta0;
+  float iterated4[4];  // grConstantColorValue4's a, r, g, b, 0..255
 };
 
 struct BlendState {
@@ -121,6 +128,9 @@ struct TmuState {
   // Without multibase every level uses base[0], which grTexSource sets.
   std::int64_t base[4];
   TexCombineUnit combine;
+  // grTexDetailControl as the tDetail register holds it: the LOD below which detail appears
+  // (signed, whole LODs), the shift of (bias - LOD) and the largest factor (0..255).
+  int detail_bias, detail_scale, detail_max;
   TextureSource source;
   TextureTables tables;
   std::vector<std::uint8_t> memory;  // the TMU's texture RAM; downloads write raw bytes here

@@ -20,5 +20,18 @@ FxU16 w_code(double oow);
 double oow_from_w_code(FxU16 code);
 
 bool is_w_buffer(GrDepthBufferMode_t mode);
+bool is_z_buffer(GrDepthBufferMode_t mode);
+// The COMPARE_TO_BIAS modes: the depth test compares grDepthBiasLevel, not the pixel's depth,
+// with the stored depth, and the pixel's depth carries no bias.
+bool compares_to_bias(GrDepthBufferMode_t mode);
+
+// For the COMPARE_TO_BIAS modes: the stored GL depths whose 16-bit code passes
+// `bias_level (as unsigned 16 bits) OP code`, as closed intervals [low, high] of GL window depth
+// on the 24-bit buffer's levels. Returns how many (0 for NEVER or an empty set, 2 for NOTEQUAL
+// on both sides of the equal codes, else 1).
+struct DepthInterval {
+  double low, high;
+};
+int bias_compare_intervals(const DepthState &depth, DepthInterval intervals[2]);
 
 }  // namespace glide_shim

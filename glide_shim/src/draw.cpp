@@ -29,12 +29,15 @@ VertexFields fields_read(const GlideContext &context) {
   const CombineUnit &color = context.color_path.color;
   const CombineUnit &alpha = context.color_path.alpha;
   VertexFields fields{};
-  fields.rgb = color.local == GR_COMBINE_LOCAL_ITERATED || color.other == GR_COMBINE_OTHER_ITERATED;
+  // In delta0 mode the driver sends no vertex colour: the iterators hold grConstantColorValue4's.
+  fields.rgb = !context.color_path.delta0 &&
+               (color.local == GR_COMBINE_LOCAL_ITERATED || color.other == GR_COMBINE_OTHER_ITERATED ||
+                context.color_path.alpha_controls_itrgb);
   fields.alpha = alpha.local == GR_COMBINE_LOCAL_ITERATED || alpha.other == GR_COMBINE_OTHER_ITERATED;
   fields.texture = reads_texture(context.color_path);
   fields.fog = context.fog.mode & 0xFF;
   fields.alpha = fields.alpha || fields.fog == GR_FOG_WITH_ITERATED_ALPHA;
-  fields.ooz = context.depth.mode == GR_DEPTHBUFFER_ZBUFFER || fields.fog == GR_FOG_WITH_ITERATED_Z;
+  fields.ooz = is_z_buffer(context.depth.mode) || fields.fog == GR_FOG_WITH_ITERATED_Z;
   fields.oow = is_w_buffer(context.depth.mode) || fields.texture || fields.fog == GR_FOG_WITH_TABLE;
   return fields;
 }
@@ -66,6 +69,11 @@ bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrV
   out.x = snap(x);
   out.y = snap(y);
   if (fields.rgb) out.r = in.r, out.g = in.g, out.b = in.b;
+  if (context.color_path.delta0) {
+    // Fr/Fg/Fb hold the colour in 12.12 with zero slopes; the pixel sees its integer part.
+    const float *rgb = &context.color_path.iterated4[1];
+    out.r = std::floor(rgb[0]), out.g = std::floor(rgb[1]), out.b = std::floor(rgb[2]);
+  }
   if (fields.alpha) out.a = in.a;
   out.depth = vertex_depth(context.depth, fields.ooz ? in.ooz : 0.0f, fields.oow ? in.oow : 0.0f);
   if (fields.fog == GR_FOG_WITH_TABLE) out.fog = in.oow;

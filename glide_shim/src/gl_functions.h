@@ -31,6 +31,7 @@ namespace glide_shim {
   X(glPushClientAttrib) X(glPopClientAttrib) X(glMatrixMode) X(glPushMatrix) X(glPopMatrix) \
   X(glLoadIdentity) X(glOrtho) X(glTexEnvi) X(glEnableClientState) \
   X(glDisableClientState) X(glVertexPointer) X(glColorPointer) X(glTexCoordPointer) X(glStencilMask) \
+  X(glStencilFunc) X(glStencilOp) X(glGetBooleanv) \
   X(glBindBuffer) X(glGenQueries) X(glDeleteQueries) X(glBeginQuery) \
   X(glEndQuery) X(glGetQueryObjectuiv)
 

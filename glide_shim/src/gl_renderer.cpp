@@ -72,6 +72,7 @@ GlRenderer::~GlRenderer() {
   const GlFunctions &gl = backend_->gl;
   textures_.release(gl);
   for (auto &entry : programs_) gl.glDeleteProgram(entry.second.program);
+  if (bias_mark_program_ != 0) gl.glDeleteProgram(bias_mark_program_);
   if (query_ != 0) gl.glDeleteQueries(1, &query_);
   gl.glDeleteFramebuffers(1, &framebuffer_);
   gl.glDeleteRenderbuffers(2, color_buffers_);
@@ -181,6 +182,9 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   program.tex_levels = location("u_tex_levels");
   program.lod_range = location("u_lod_range");
   program.lod_bias = location("u_lod_bias");
+  program.level = location("u_level");
+  program.level_scale = location("u_level_scale");
+  program.detail = location("u_detail");
   program.screen_height = location("u_screen_height");
   program.color_select = location("u_color_select");
   program.color_other = location("u_color_other");
@@ -214,8 +218,19 @@ void GlRenderer::apply_fixed_function_state() {
   gl.glColorMask(rgb, rgb, rgb, GL_FALSE);
 
   const DepthState &depth = context_.depth;
+  bias_interval_count_ = 0;
   if (depth.mode == GR_DEPTHBUFFER_DISABLE) {
     gl.glDisable(GL_DEPTH_TEST);
+  } else if (compares_to_bias(depth.mode)) {
+    // bias OP stored: draw_tested marks the pixels whose stored depth passes in the stencil
+    // buffer first; the depth test itself passes, so a pixel writes its own (unbiased) depth.
+    bias_interval_count_ = bias_compare_intervals(depth, bias_intervals_);
+    const bool everywhere = bias_interval_count_ == 1 && bias_intervals_[0].low <= 0.0 &&
+                            bias_intervals_[0].high >= 1.0;
+    if (everywhere) bias_interval_count_ = 0;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glDepthFunc(bias_interval_count_ == 0 && !everywhere ? GL_NEVER : GL_ALWAYS);
+    gl.glDepthMask(depth.mask ? GL_TRUE : GL_FALSE);
   } else {
     const bool w_buffer = depth.mode == GR_DEPTHBUFFER_WBUFFER;
     gl.glEnable(GL_DEPTH_TEST);
@@ -249,7 +264,9 @@ void GlRenderer::set_fog_uniforms(const ShaderProgram &program) {
     table[2 * i + 1] = static_cast<float>(((next - fog.table[i]) * 4) & 0xFF);
   }
   gl.glUniform2fv(program.fog_table, GR_FOG_TABLE_SIZE, table);
-  const bool biased = context_.depth.mode != GR_DEPTHBUFFER_DISABLE;
+  // The depth-bias enable (fbzMode bit 16): Z and W modes, not the COMPARE_TO_BIAS ones.
+  const bool biased =
+      context_.depth.mode != GR_DEPTHBUFFER_DISABLE && !compares_to_bias(context_.depth.mode);
   gl.glUniform1f(program.fog_bias, biased ? static_cast<float>(context_.depth.bias_level) : 0.0f);
 }
 
@@ -265,6 +282,7 @@ void GlRenderer::queue(Primitive primitive, const ShimVertex *vertices, int coun
 void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &key) {
   const GlFunctions &gl = backend_->gl;
   gl.glUseProgram(program->program);
+  drawing_program_ = program->program;
   gl.glUniform2f(program->screen, static_cast<float>(target_.width),
                  static_cast<float>(target_.height));
   gl.glUniform1f(program->y_down, context_.raster.origin == GR_ORIGIN_UPPER_LEFT ? 1.0f : 0.0f);
@@ -290,6 +308,11 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
     gl.glUniform4fv(program->tex_levels, kLodCount, &bound.levels[0][0]);
     gl.glUniform2f(program->lod_range, bound.lod_min, bound.lod_max);
     gl.glUniform1f(program->lod_bias, context_.tmu.lod_bias);
+    // Without mip-mapping the one level sampled: lodmin, or the next if evenOdd left it out.
+    int level = static_cast<int>(bound.lod_min);
+    if (bound.levels[level][3] < 0.5f) level = std::min(level + 1, kLodCount - 1);
+    gl.glUniform4fv(program->level, 1, bound.levels[level]);
+    gl.glUniform1f(program->level_scale, 1.0f / static_cast<float>(1 << level));
   } else if (key.texture) {
     // No grTexSource yet: a texture of size 1 reading texel zero of an unbound unit (0,0,0,0).
     gl.glBindTexture(GL_TEXTURE_2D, 0);
@@ -299,6 +322,14 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
     gl.glUniform4fv(program->tex_levels, kLodCount, &none.levels[0][0]);
     gl.glUniform2f(program->lod_range, 0.0f, 0.0f);
     gl.glUniform1f(program->lod_bias, 0.0f);
+    gl.glUniform4fv(program->level, 1, none.levels[GR_LOD_256]);
+    gl.glUniform1f(program->level_scale, 1.0f);
+  }
+  if (key.texture) {
+    const TmuState &tmu_state = context_.tmu;
+    gl.glUniform3f(program->detail, static_cast<float>(tmu_state.detail_bias),
+                   static_cast<float>(1 << tmu_state.detail_scale),
+                   static_cast<float>(tmu_state.detail_max));
   }
 
   if (key.fog != GR_FOG_DISABLE) set_fog_uniforms(*program);
@@ -335,16 +366,125 @@ void GlRenderer::flush() {
   if (context_.perf.counting) {
     draw_counting_stages(program, key, mode);
   } else {
-    if (counting_) gl.glBeginQuery(GL_SAMPLES_PASSED, query_);
-    gl.glDrawArrays(mode, 0, static_cast<GLsizei>(queue_.size()));
-    if (counting_) {
-      gl.glEndQuery(GL_SAMPLES_PASSED);
-      GLuint passed = 0;
-      gl.glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &passed);
-      pixels_counted_ += passed;
-    }
+    const std::uint32_t passed =
+        draw_tested(mode, 0, static_cast<int>(queue_.size()), counting_, context_.depth.mask);
+    if (counting_) pixels_counted_ += passed;
   }
   queue_.clear();
+}
+
+std::uint32_t GlRenderer::draw_tested(unsigned mode, int first, int count, bool query,
+                                      bool depth_writes) {
+  const GlFunctions &gl = backend_->gl;
+  if (bias_interval_count_ == 0) {
+    if (query) return samples_drawn(mode, first, count);
+    gl.glDrawArrays(mode, first, count);
+    return 0;
+  }
+  // COMPARE_TO_BIAS: stencil bit 7 marks the pixels whose stored depth lies in a passing
+  // interval (a depth test of a constant fragment depth against the stored one), the primitives
+  // draw where it is set, and the bit is cleared again. With depth writes each primitive goes
+  // through alone, so the next one's test sees its writes, as on the hardware.
+  const unsigned mark = bias_mark_program();
+  if (mark == 0) return 0;
+  gl.glUseProgram(mark);  // its vertex shader places the vertices as the drawing one does
+  gl.glUniform2f(bias_mark_screen_, static_cast<float>(target_.width),
+                 static_cast<float>(target_.height));
+  gl.glUniform1f(bias_mark_y_down_, context_.raster.origin == GR_ORIGIN_UPPER_LEFT ? 1.0f : 0.0f);
+  GLboolean color_mask[4], depth_mask = GL_FALSE;
+  gl.glGetBooleanv(GL_COLOR_WRITEMASK, color_mask);
+  gl.glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+  // Primitives that cannot overlap (flush_disjoint) need no order among themselves.
+  const int step = depth_writes && !disjoint_ ? (primitive_ == Primitive::Triangles ? 3
+                                                 : primitive_ == Primitive::Lines  ? 2
+                                                                                   : 1)
+                                              : count;
+  auto stencil_pass = [&](int at, int n, GLenum depth_function, double depth, GLint bit) {
+    gl.glDepthFunc(depth_function);
+    gl.glUniform1f(bias_mark_depth_, static_cast<float>(depth));
+    gl.glStencilFunc(GL_ALWAYS, bit, 0x80);
+    gl.glDrawArrays(mode, at, n);
+  };
+  gl.glEnable(GL_STENCIL_TEST);
+  gl.glStencilMask(0x80);
+  std::uint32_t passed = 0;
+  for (int at = first; at < first + count; at += step) {
+    const int n = std::min(step, first + count - at);
+    gl.glUseProgram(mark);
+    gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl.glDepthMask(GL_FALSE);
+    gl.glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    stencil_pass(at, n, GL_ALWAYS, 0.0, 0);  // whatever plain GL code left in bit 7
+    for (int i = 0; i < bias_interval_count_; ++i) {
+      const DepthInterval &interval = bias_intervals_[i];
+      if (interval.low <= 0.0) {
+        stencil_pass(at, n, GL_GEQUAL, interval.high, 0x80);  // stored <= high
+      } else {
+        stencil_pass(at, n, GL_LEQUAL, interval.low, 0x80);  // stored >= low
+        if (interval.high < 1.0) stencil_pass(at, n, GL_LESS, interval.high, 0);  // not above
+      }
+    }
+    gl.glUseProgram(drawing_program_);
+    gl.glColorMask(color_mask[0], color_mask[1], color_mask[2], color_mask[3]);
+    gl.glDepthMask(depth_mask);
+    gl.glDepthFunc(GL_ALWAYS);
+    gl.glStencilFunc(GL_EQUAL, 0x80, 0x80);
+    gl.glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (query) {
+      passed += samples_drawn(mode, at, n);
+    } else {
+      gl.glDrawArrays(mode, at, n);
+    }
+    gl.glUseProgram(mark);
+    gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl.glDepthMask(GL_FALSE);
+    gl.glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    stencil_pass(at, n, GL_ALWAYS, 0.0, 0);
+  }
+  gl.glUseProgram(drawing_program_);
+  gl.glColorMask(color_mask[0], color_mask[1], color_mask[2], color_mask[3]);
+  gl.glDepthMask(depth_mask);
+  gl.glDisable(GL_STENCIL_TEST);
+  gl.glStencilMask(0xFF);
+  return passed;
+}
+
+unsigned GlRenderer::bias_mark_program() {
+  if (bias_mark_program_ != 0) return bias_mark_program_;
+  const GlFunctions &gl = backend_->gl;
+  std::string error;
+  const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(), error);
+  const unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, R"(#version 120
+uniform float u_depth;  // GL window depth of the interval's end
+void main() {
+  gl_FragDepth = u_depth;
+  gl_FragColor = vec4(0.0);
+}
+)", error) : 0;
+  if (fs == 0) {
+    if (vs) gl.glDeleteShader(vs);
+    context_.report(GLIDESHIM_ERR_BACKEND, error);
+    return 0;
+  }
+  const unsigned program = gl.glCreateProgram();
+  gl.glAttachShader(program, vs);
+  gl.glAttachShader(program, fs);
+  gl.glBindAttribLocation(program, kPosition, "a_position");
+  gl.glLinkProgram(program);
+  gl.glDeleteShader(vs);
+  gl.glDeleteShader(fs);
+  GLint linked = GL_FALSE;
+  gl.glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  if (linked != GL_TRUE) {
+    gl.glDeleteProgram(program);
+    context_.report(GLIDESHIM_ERR_BACKEND, "the COMPARE_TO_BIAS stencil program did not link");
+    return 0;
+  }
+  bias_mark_program_ = program;
+  bias_mark_depth_ = gl.glGetUniformLocation(program, "u_depth");
+  bias_mark_screen_ = gl.glGetUniformLocation(program, "u_screen");
+  bias_mark_y_down_ = gl.glGetUniformLocation(program, "u_y_down");
+  return program;
 }
 
 std::uint32_t GlRenderer::samples_drawn(unsigned mode, int first, int count) {
@@ -381,17 +521,21 @@ void GlRenderer::draw_counting_stages(const ShaderProgram *program, const Pipeli
     gl.glDepthMask(GL_FALSE);
     use_program(untested_program, untested);
     gl.glDisable(GL_DEPTH_TEST);
+    const int bias_intervals = bias_interval_count_;
+    bias_interval_count_ = 0;  // no depth test at all for the pixels in
     const std::uint32_t in = samples_drawn(mode, first, per_primitive);
+    bias_interval_count_ = bias_intervals;
     if (depth_test) gl.glEnable(GL_DEPTH_TEST);
-    const std::uint32_t depth_passed = depth_test ? samples_drawn(mode, first, per_primitive) : in;
+    const std::uint32_t depth_passed =
+        depth_test ? draw_tested(mode, first, per_primitive, true, false) : in;
     std::uint32_t chroma_passed = depth_passed;
     if (chroma_program != nullptr) {
       use_program(chroma_program, chroma_only);
-      chroma_passed = samples_drawn(mode, first, per_primitive);
+      chroma_passed = draw_tested(mode, first, per_primitive, true, false);
     }
     apply_fixed_function_state();
     use_program(program, key);
-    const std::uint32_t out = samples_drawn(mode, first, per_primitive);
+    const std::uint32_t out = draw_tested(mode, first, per_primitive, true, context_.depth.mask);
     counts.pixelsIn += in;
     counts.zFuncFail += in - depth_passed;
     counts.chromaFail += depth_passed - chroma_passed;

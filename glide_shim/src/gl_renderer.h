@@ -4,6 +4,7 @@
 #pragma once
 
 #include "backend.h"
+#include "depth.h"
 #include "shader_source.h"
 #include "texture_cache.h"
 
@@ -84,6 +85,11 @@ class GlRenderer {
   void use_program(const ShaderProgram *program, const PipelineKey &key);
   // Pixels of queue_[first, first + count) that pass every enabled test (an occlusion query).
   std::uint32_t samples_drawn(unsigned mode, int first, int count);
+  // Draws queue_[first, first + count) with the bound program; in the COMPARE_TO_BIAS modes
+  // only where the stored depth passes (stencil bit 7 marks it for the draw, then is cleared),
+  // one primitive at a time when `depth_writes`. Returns the pixels drawn when `query` is set.
+  std::uint32_t draw_tested(unsigned mode, int first, int count, bool query, bool depth_writes);
+  unsigned bias_mark_program();  // writes a constant depth and no colour; 0 on failure
   void draw_counting_stages(const ShaderProgram *program, const PipelineKey &key, unsigned mode);
 
   struct Target {
@@ -106,6 +112,13 @@ class GlRenderer {
   std::map<std::string, ShaderProgram> programs_;
   TextureCache textures_;
   bool counting_ = false;
+  unsigned drawing_program_ = 0;  // the program use_program bound last
+  // The stored-depth intervals the COMPARE_TO_BIAS test passes on, as apply_fixed_function_state
+  // set them up (0 outside those modes, for NEVER, and when it passes everywhere).
+  DepthInterval bias_intervals_[2] = {};
+  int bias_interval_count_ = 0;
+  unsigned bias_mark_program_ = 0;
+  int bias_mark_depth_ = -1, bias_mark_screen_ = -1, bias_mark_y_down_ = -1;
   unsigned query_ = 0;
   std::uint32_t pixels_counted_ = 0;
   bool disjoint_ = false;  // flush_disjoint is drawing

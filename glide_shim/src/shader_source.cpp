@@ -28,7 +28,7 @@ std::string one_minus(GrCombineFactor_t factor, const std::string &source) {
 }
 
 // The factor's source, 0..255. In the TMU (`fbi` false) local is the texel, other the absent
-// upstream TMU, and 4/5 mean DETAIL (zero: grTexDetailControl is not implemented) and
+// upstream TMU, and 4/5 mean DETAIL (grTexDetailControl's factor at the pixel's LOD) and
 // LOD_FRACTION (the fraction of the pixel's LOD, 0..255; zero without mip-mapping).
 std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std::string &local,
                         const std::string &local_alpha, const std::string &other_alpha) {
@@ -38,7 +38,8 @@ std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std:
     case GR_COMBINE_FACTOR_LOCAL: return one_minus(factor, local);
     case GR_COMBINE_FACTOR_OTHER_ALPHA: return one_minus(factor, widen(other_alpha));
     case GR_COMBINE_FACTOR_LOCAL_ALPHA: return one_minus(factor, widen(local_alpha));
-    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: return one_minus(factor, fbi ? widen("tex.a") : zero);
+    case GR_COMBINE_FACTOR_TEXTURE_ALPHA:  // DETAIL in the TMU
+      return one_minus(factor, widen(fbi ? "tex.a" : "detail"));
     case GR_COMBINE_FACTOR_TEXTURE_RGB:  // LOD_FRACTION in the TMU
       if (!fbi) return one_minus(factor, widen("lod_frac"));
       return one_minus(factor, rgb ? "tex.rgb" : zero);
@@ -180,33 +181,35 @@ std::string filter_code(bool bilinear, const char *address_s, const char *addres
 }
 
 // The TMU's fetch: the LOD (per pixel when mip-mapping, else lodmin), the level it selects, and
-// the filter. The LOD follows the hardware: log2 of the larger screen-space gradient of the
-// iterated (s/w, t/w) (constant over a triangle), minus log2 of the iterated 1/w, in 8.8 fixed
-// point, plus the bias, plus the 4x4 dither / 16 when enabled, clamped to [lodmin, lodmax];
-// its integer part picks the level (the next one if the evenOdd mask left it out) and its
-// fraction is the TMU's LOD_FRACTION factor.
+// the filter; the clamped LOD goes out for the LOD_FRACTION and DETAIL factors. The LOD follows
+// the hardware: log2 of the larger screen-space gradient of the iterated (s/w, t/w) (constant
+// over a triangle), minus log2 of the iterated 1/w, in 8.8 fixed point, plus the bias, plus the
+// 4x4 dither / 16 when enabled, clamped to [lodmin, lodmax]; its integer part picks the level
+// (the next one if the evenOdd mask left it out). Without mip-mapping lodmin == lodmax, so the
+// LOD, the level and its scale are the same for every pixel and come in as uniforms.
 std::string tmu_sample_code(const PipelineKey &key) {
   const char *address_s = key.wrap_s ? "wrap_index" : "clamp_index";
   const char *address_t = key.wrap_t ? "wrap_index" : "clamp_index";
   std::ostringstream s;
-  s << "vec4 sample_tmu(out float lod_frac) {\n"
+  s << "vec4 sample_tmu(out float lod) {\n"
        "  // Glide s,t span 0..256 along the longer side; a divisor <= 0 gives s = t = 0.\n"
        "  vec2 st = v_stq.z > 0.0 ? v_stq.xy / v_stq.z : vec2(0.0);\n";
   if (key.mipmap) {
     s << "  vec2 gx = dFdx(v_stq.xy), gy = dFdy(v_stq.xy);  // 256-texel units per pixel\n"
-         "  float lod = 0.5 * log2(max(max(dot(gx, gx), dot(gy, gy)), 1e-30)) -"
+         "  lod = 0.5 * log2(max(max(dot(gx, gx), dot(gy, gy)), 1e-30)) -"
          " log2(max(abs(v_stq.z), 1e-30));\n"
          "  lod = floor(lod * 256.0) / 256.0 + u_lod_bias;\n";
     if (key.lod_dither) s << dither_entry_code("lod_d") << "  lod += lod_d / 16.0;\n";
-    s << "  lod = clamp(lod, u_lod_range.x, u_lod_range.y);\n";
+    s << "  lod = clamp(lod, u_lod_range.x, u_lod_range.y);\n"
+         "  float ilod = floor(lod);\n"
+         "  if (u_tex_levels[int(ilod)].w < 0.5) ilod = min(ilod + 1.0, 8.0);\n"
+         "  vec4 level = u_tex_levels[int(ilod)];\n"
+         "  vec2 uv = st / exp2(ilod);  // texel units of the level\n";
   } else {
-    s << "  float lod = u_lod_range.x;\n";
+    s << "  lod = u_lod_range.x;\n"
+         "  vec4 level = u_level;\n"
+         "  vec2 uv = st * u_level_scale;  // texel units of the level\n";
   }
-  s << "  float ilod = floor(lod);\n"
-       "  if (u_tex_levels[int(ilod)].w < 0.5) ilod = min(ilod + 1.0, 8.0);\n"
-       "  vec4 level = u_tex_levels[int(ilod)];\n"
-       "  lod_frac = floor((lod - floor(lod)) * 256.0);\n"
-       "  vec2 uv = st / exp2(ilod);  // texel units of the level\n";
   if (key.mag_bilinear == key.min_bilinear) {
     s << "  {\n" << filter_code(key.mag_bilinear, address_s, address_t) << "  }\n";
   } else {
@@ -216,6 +219,27 @@ std::string tmu_sample_code(const PipelineKey &key) {
   }
   s << "}\n";
   return s.str();
+}
+
+// The TMU's LOD-dependent factors, from the clamped LOD (a multiple of 1/256), for the ones the
+// texture combine reads. DETAIL as MAME's TMU: 0 from detail_bias down, else
+// ((bias - LOD) << scale) >> 8 in 8.8, limited to detail_max.
+std::string lod_factor_code(const PipelineKey &key) {
+  auto reads = [&key](int source) {
+    for (const UnitShape *unit : {&key.tmu_rgb, &key.tmu_alpha}) {
+      if ((static_cast<int>(unit->factor) & 0x7) == source) return true;
+    }
+    return false;
+  };
+  std::string code;
+  if (reads(GR_COMBINE_FACTOR_LOD_FRACTION)) {
+    code += "  float lod_frac = floor((tex_lod - floor(tex_lod)) * 256.0);\n";
+  }
+  if (reads(GR_COMBINE_FACTOR_DETAIL_FACTOR)) {
+    code += "  float detail = tex_lod >= u_detail.x ? 0.0 :"
+            " min(floor((u_detail.x - tex_lod) * u_detail.y), u_detail.z);\n";
+  }
+  return code;
 }
 
 const char *kFragmentPrelude = R"(
@@ -230,6 +254,9 @@ uniform vec2 u_tex_size;    // the atlas holding every level, in texels
 uniform vec4 u_tex_levels[9];  // per GR_LOD: atlas row of the level's top, width, height, held
 uniform vec2 u_lod_range;   // lodmin, lodmax as GR_LOD values (256 = 0 .. 1 = 8)
 uniform float u_lod_bias;   // grTexLodBiasValue in quarters, as the tLOD register holds it
+uniform vec4 u_level;       // without mip-mapping: u_tex_levels of the one level sampled
+uniform float u_level_scale;  // and 1 / its size divisor, 2^-level
+uniform vec3 u_detail;      // grTexDetailControl: bias (whole LODs), 2^scale, max (0..255)
 uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
@@ -273,6 +300,7 @@ PipelineKey pipeline_key(const GlideContext &context) {
   PipelineKey key;
   const ColorPathState &path = context.color_path;
   key.color = shape(path.color.function, path.color.factor);
+  key.alpha_controls_itrgb = path.alpha_controls_itrgb;
   key.alpha = shape(path.alpha.function, path.alpha.factor);
   key.texture = reads_texture(path);
   if (key.texture) {
@@ -305,7 +333,7 @@ std::string PipelineKey::defines() const {
   }
   s << "texture " << texture << " filter " << mag_bilinear << min_bilinear << " mipmap " << mipmap
     << lod_dither << " wrap " << wrap_s << wrap_t
-    << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
+    << " itrgb " << alpha_controls_itrgb << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither << " fog " << fog;
   return s.str();
 }
@@ -344,8 +372,9 @@ std::string fragment_shader_source(const PipelineKey &key) {
   s << "void main() {\n"
        "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
   if (key.texture) {
-    s << "  float lod_frac;\n"
-         "  vec4 texel = sample_tmu(lod_frac);\n"
+    s << "  float tex_lod;\n"
+         "  vec4 texel = sample_tmu(tex_lod);\n"
+      << lod_factor_code(key)
       << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
                       "0.0", "u_tmu_invert.x")
       << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",
@@ -354,8 +383,12 @@ std::string fragment_shader_source(const PipelineKey &key) {
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
   }
-  s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_select.x);\n"
-       "  vec3 c_other = u_color_other.x * it.rgb + u_color_other.y * tex.rgb +"
+  if (key.alpha_controls_itrgb) {  // grAlphaControlsITRGBLighting: texture alpha bit 7
+    s << "  vec3 c_local = tex.a >= 128.0 ? u_constant.rgb : it.rgb;\n";
+  } else {
+    s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_select.x);\n";
+  }
+  s << "  vec3 c_other = u_color_other.x * it.rgb + u_color_other.y * tex.rgb +"
        " u_color_other.z * u_constant.rgb;\n"
        "  float a_local = mix(it.a, u_constant.a, u_alpha_select.x);\n"
        "  float a_other = u_alpha_other.x * it.a + u_alpha_other.y * tex.a +"

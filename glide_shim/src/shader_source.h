@@ -24,9 +24,12 @@ struct PipelineKey {
   bool texture = false;  // the colour path reads the TMU
   // Filters: with one reachable LOD (no mip-mapping) only the magnification filter is used.
   bool mag_bilinear = false, min_bilinear = false;
-  bool mipmap = false;      // LOD computed per pixel (grTexMipMapMode on, more than one level)
+  // LOD computed per pixel (grTexMipMapMode on, more than one level); without it the LOD, the
+  // level sampled and its scale are uniforms, and the shader does no LOD work per pixel.
+  bool mipmap = false;
   bool lod_dither = false;  // GR_MIPMAP_NEAREST_DITHER with the hint that allows it
   bool wrap_s = false, wrap_t = false;
+  bool alpha_controls_itrgb = false;  // the colour local chosen by the texture's alpha bit 7
   bool chroma_key = false;
   GrCmpFnc_t alpha_test = GR_CMP_ALWAYS;
   bool blending = false;  // GL blends the unquantised colour; otherwise the shader writes 565
@@ -57,6 +60,7 @@ struct ShaderProgram {
       tmu_invert = -1;
   int screen = -1, y_down = -1, constant = -1, chroma = -1, alpha_ref = -1, texture = -1,
       tex_size = -1, tex_levels = -1, lod_range = -1, lod_bias = -1, screen_height = -1;
+  int level = -1, level_scale = -1, detail = -1;
   int fog_color = -1, fog_flags = -1, fog_table = -1, fog_bias = -1;
 };
 

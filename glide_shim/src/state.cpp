@@ -38,17 +38,21 @@ struct PackedState {
   FxI32 fog_mode;
   FxU32 fog_color;
   FxU8 fog_table[GR_FOG_TABLE_SIZE];
-  FxI32 clamp_s, clamp_t, min_filter, mag_filter, mipmap_mode;
+  FxU8 clamp_s, clamp_t, min_filter, mag_filter, mipmap_mode;  // enums of 0..2: a byte each
   FxU8 lod_blend, allow_lod_dither, lod_dither, multibase;
   float lod_bias;
   std::int64_t base[4];
-  FxI32 tmu_rgb_function, tmu_rgb_factor, tmu_alpha_function, tmu_alpha_factor;
+  FxU8 tmu_rgb_function, tmu_rgb_factor, tmu_alpha_function, tmu_alpha_factor;  // 0..16
   FxU8 tmu_rgb_invert, tmu_alpha_invert;
   FxU8 source_valid;
   FxU32 source_address;
   FxI32 source_small_lod, source_large_lod, source_aspect, source_format;
   FxU32 source_even_odd;
   FxI32 ncc_select;
+  FxU8 alpha_controls_itrgb, delta0;  // fbzColorPath bit 7; guColorCombineFunction's delta0
+  float iterated4[4];                  // grConstantColorValue4 (gc->state.a, r, g, b)
+  FxI8 detail_bias;                    // tDetail
+  FxU8 detail_scale, detail_max;
   FxU8 lfb_mode;  // lfbMode's write bits: RGBA lanes (bits 0-1), byte swizzle (2), word swap (3)
   FxU8 lfb_constant_alpha;
   FxU16 lfb_constant_depth;
@@ -66,6 +70,9 @@ PackedCombine pack(const glide_shim::CombineUnit &unit) {
 glide_shim::CombineUnit unpack(const PackedCombine &unit) {
   return {unit.function, unit.factor, unit.local, unit.other, unit.invert != 0};
 }
+
+// The TMU's enums and combine codes fit a byte; packing them so leaves GrState room.
+FxU8 byte(FxI32 value) { return static_cast<FxU8>(value); }
 
 PackedState save(const glide_shim::GlideContext &ctx) {
   PackedState s{};
@@ -98,18 +105,19 @@ PackedState save(const glide_shim::GlideContext &ctx) {
   s.fog_color = ctx.fog.color;
   std::memcpy(s.fog_table, ctx.fog.table, sizeof s.fog_table);
   const auto &tmu = ctx.tmu;
-  s.clamp_s = tmu.clamp_s, s.clamp_t = tmu.clamp_t;
-  s.min_filter = tmu.min_filter, s.mag_filter = tmu.mag_filter;
-  s.mipmap_mode = tmu.mipmap_mode;
+  s.clamp_s = byte(tmu.clamp_s), s.clamp_t = byte(tmu.clamp_t);
+  s.min_filter = byte(tmu.min_filter), s.mag_filter = byte(tmu.mag_filter);
+  s.mipmap_mode = byte(tmu.mipmap_mode);
   s.lod_blend = tmu.lod_blend ? 1 : 0;
   s.allow_lod_dither = tmu.allow_lod_dither ? 1 : 0;
   s.lod_dither = tmu.lod_dither ? 1 : 0;
   s.multibase = tmu.multibase ? 1 : 0;
   s.lod_bias = tmu.lod_bias;
   std::memcpy(s.base, tmu.base, sizeof s.base);
-  s.tmu_rgb_function = tmu.combine.rgb_function, s.tmu_rgb_factor = tmu.combine.rgb_factor;
-  s.tmu_alpha_function = tmu.combine.alpha_function;
-  s.tmu_alpha_factor = tmu.combine.alpha_factor;
+  s.tmu_rgb_function = byte(tmu.combine.rgb_function);
+  s.tmu_rgb_factor = byte(tmu.combine.rgb_factor);
+  s.tmu_alpha_function = byte(tmu.combine.alpha_function);
+  s.tmu_alpha_factor = byte(tmu.combine.alpha_factor);
   s.tmu_rgb_invert = tmu.combine.rgb_invert ? 1 : 0;
   s.tmu_alpha_invert = tmu.combine.alpha_invert ? 1 : 0;
   s.source_valid = tmu.source.valid ? 1 : 0;
@@ -118,6 +126,12 @@ PackedState save(const glide_shim::GlideContext &ctx) {
   s.source_aspect = tmu.source.aspect, s.source_format = tmu.source.format;
   s.source_even_odd = tmu.source.even_odd;
   s.ncc_select = tmu.tables.ncc_select;
+  s.alpha_controls_itrgb = ctx.color_path.alpha_controls_itrgb ? 1 : 0;
+  s.delta0 = ctx.color_path.delta0 ? 1 : 0;
+  std::memcpy(s.iterated4, ctx.color_path.iterated4, sizeof s.iterated4);
+  s.detail_bias = static_cast<FxI8>(tmu.detail_bias);
+  s.detail_scale = static_cast<FxU8>(tmu.detail_scale);
+  s.detail_max = static_cast<FxU8>(tmu.detail_max);
   const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
   s.lfb_mode = static_cast<FxU8>(layout.color_format | (layout.swizzle_bytes ? 4 : 0) |
                                  (layout.swap_words ? 8 : 0));
@@ -164,6 +178,12 @@ void restore(glide_shim::GlideContext &ctx, const PackedState &s) {
   tmu.source = {s.source_valid != 0, s.source_address, s.source_small_lod,
                 s.source_large_lod, s.source_aspect, s.source_format, s.source_even_odd};
   tmu.tables.ncc_select = s.ncc_select;
+  ctx.color_path.alpha_controls_itrgb = s.alpha_controls_itrgb != 0;
+  ctx.color_path.delta0 = s.delta0 != 0;
+  std::memcpy(ctx.color_path.iterated4, s.iterated4, sizeof s.iterated4);
+  tmu.detail_bias = s.detail_bias;
+  tmu.detail_scale = s.detail_scale;
+  tmu.detail_max = s.detail_max;
   ctx.lfb.layout = {s.lfb_mode & 3, (s.lfb_mode & 4) != 0, (s.lfb_mode & 8) != 0};
   ctx.lfb.constant_alpha = s.lfb_constant_alpha;
   ctx.lfb.constant_depth = s.lfb_constant_depth;

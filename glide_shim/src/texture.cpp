@@ -176,6 +176,29 @@ void grTexLodBiasValue(GrChipID_t tmu, float bias) {
   ctx.tmu.lod_bias = glide_shim::fixed_lod_bias(bias);
 }
 
+void grTexDetailControl(GrChipID_t tmu, int lod_bias, FxU8 detail_scale, float detail_max) {
+  auto &ctx = current();
+  if (!ctx.require_open("grTexDetailControl") || !check_tmu("grTexDetailControl", tmu)) return;
+  // The driver's checks (ditex.c): tDetail holds a 6-bit signed bias, a 3-bit scale and an
+  // 8-bit maximum.
+  std::string problem;
+  if (lod_bias < -32 || lod_bias > 31) {
+    problem = "lod_bias " + std::to_string(lod_bias) + " is outside -32..31";
+  } else if (detail_scale > 7) {
+    problem = "detail_scale " + std::to_string(detail_scale) + " is outside 0..7";
+  } else if (!(detail_max >= 0.0f && detail_max <= 1.0f)) {
+    problem = "detail_max " + std::to_string(detail_max) + " is outside 0..1";
+  }
+  if (!problem.empty()) {
+    ctx.report(GLIDESHIM_ERR_OUT_OF_RANGE, "grTexDetailControl: " + problem);
+    return;
+  }
+  ctx.flush();
+  ctx.tmu.detail_bias = lod_bias;
+  ctx.tmu.detail_scale = detail_scale;
+  ctx.tmu.detail_max = static_cast<int>(detail_max * 255.0f);  // (FxU32)(detail_max * 255.0f)
+}
+
 void grTexNCCTable(GrChipID_t tmu, GrNCCTable_t table) {
   auto &ctx = current();
   if (!ctx.require_open("grTexNCCTable") || !check_tmu("grTexNCCTable", tmu)) return;

@@ -59,12 +59,13 @@ FunctionBits function_bits(int function) {
 }
 
 // Factor source 4 is the TMU output alpha in the FBI but DETAIL in a TMU, and 5 is LOD_FRACTION
-// in a TMU (TEXTURE_RGB exists only on Voodoo 2 FBIs); the TMU ones are modelled as 0.
+// in a TMU (TEXTURE_RGB exists only on Voodoo 2 FBIs).
 enum class Unit { kFbi, kTmu };
 
-// Resolved factor f in 0..255. `local` is this channel's local value (a_local in an alpha unit).
+// Resolved factor f in 0..255. `local` is this channel's local value (a_local in an alpha unit);
+// `texture_alpha` is the TMU output's alpha in the FBI and the detail factor in a TMU.
 int resolve_factor(int factor, Unit unit, int local, int other_alpha, int local_alpha,
-                   int texture_alpha) {
+                   int texture_alpha, int lod_fraction = 0) {
   const bool one_minus = (factor & 0x8) != 0;
   int source = 0;
   switch (factor & ~0x8) {
@@ -72,10 +73,10 @@ int resolve_factor(int factor, Unit unit, int local, int other_alpha, int local_
     case GR_COMBINE_FACTOR_LOCAL: source = local; break;
     case GR_COMBINE_FACTOR_OTHER_ALPHA: source = other_alpha; break;
     case GR_COMBINE_FACTOR_LOCAL_ALPHA: source = local_alpha; break;
-    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: source = unit == Unit::kFbi ? texture_alpha : 0; break;
+    case GR_COMBINE_FACTOR_TEXTURE_ALPHA: source = texture_alpha; break;
     case GR_COMBINE_FACTOR_LOD_FRACTION:
       if (unit != Unit::kTmu) throw_bad_enum("FBI combine factor", factor);
-      source = 0;
+      source = lod_fraction;
       break;
     default: throw_bad_enum("combine factor", factor);
   }
@@ -205,7 +206,11 @@ Rgba combine_other(const CombineConfig& color, const CombineConfig& alpha,
 
 Rgba combine_local(const CombineConfig& color, const CombineConfig& alpha,
                    const CombineInputs& in) {
-  return rgb_of(select_local_rgb(color.local, in), select_local_alpha(alpha.local, in));
+  const int a_local = select_local_alpha(alpha.local, in);
+  if (in.alpha_controls_itrgb) {
+    return rgb_of((in.texture.a & 0x80) != 0 ? in.constant : in.iterated, a_local);
+  }
+  return rgb_of(select_local_rgb(color.local, in), a_local);
 }
 
 Rgba combine_fbi(const CombineConfig& color, const CombineConfig& alpha, const CombineInputs& in) {
@@ -221,12 +226,15 @@ Rgba combine_fbi(const CombineConfig& color, const CombineConfig& alpha, const C
           combine_channel(alpha.function, fa, alpha.invert, other.a, local.a, local.a)};
 }
 
-Rgba combine_tmu(const TexCombineConfig& config, const Rgba& texel, const Rgba& upstream) {
+Rgba combine_tmu(const TexCombineConfig& config, const Rgba& texel, const Rgba& upstream,
+                 int detail, int lod_fraction) {
   auto rgb = [&](int o, int l) {
-    const int f = resolve_factor(config.rgb_factor, Unit::kTmu, l, upstream.a, texel.a, 0);
+    const int f = resolve_factor(config.rgb_factor, Unit::kTmu, l, upstream.a, texel.a, detail,
+                                 lod_fraction);
     return combine_channel(config.rgb_function, f, config.rgb_invert, o, l, texel.a);
   };
-  const int fa = resolve_factor(config.alpha_factor, Unit::kTmu, texel.a, upstream.a, texel.a, 0);
+  const int fa = resolve_factor(config.alpha_factor, Unit::kTmu, texel.a, upstream.a, texel.a,
+                                detail, lod_fraction);
   return {rgb(upstream.r, texel.r), rgb(upstream.g, texel.g), rgb(upstream.b, texel.b),
           combine_channel(config.alpha_function, fa, config.alpha_invert, upstream.a, texel.a,
                           texel.a)};
@@ -361,6 +369,34 @@ int z_buffer_code(double ooz, std::int16_t bias) {
   }
   return std::clamp(code + bias, 0, 0xFFFF);
 }
+
+int detail_factor(int lod_88, int detail_bias, int detail_scale, int detail_max) {
+  if (detail_bias < -32 || detail_bias > 31 || detail_scale < 0 || detail_scale > 7 ||
+      detail_max < 0 || detail_max > 255) {
+    throw std::invalid_argument("voodoo_ref: tDetail field out of range");
+  }
+  const int bias_88 = detail_bias * 256;  // MAME: s8(bias << 2) << 6
+  if (bias_88 <= lod_88) return 0;
+  return std::min(((bias_88 - lod_88) << detail_scale) >> 8, detail_max);
+}
+
+int detail_max_field(float detail_max) { return static_cast<int>(detail_max * 255.0f); }
+
+bool depth_test_passes(int function, int source, int stored) {
+  switch (function) {
+    case GR_CMP_NEVER: return false;
+    case GR_CMP_LESS: return source < stored;
+    case GR_CMP_EQUAL: return source == stored;
+    case GR_CMP_LEQUAL: return source <= stored;
+    case GR_CMP_GREATER: return source > stored;
+    case GR_CMP_NOTEQUAL: return source != stored;
+    case GR_CMP_GEQUAL: return source >= stored;
+    case GR_CMP_ALWAYS: return true;
+    default: throw_bad_enum("depth function", function);
+  }
+}
+
+int compare_to_bias_source(std::int16_t bias_level) { return static_cast<std::uint16_t>(bias_level); }
 
 std::array<int, 256> gamma_table(double gamma) {
   if (!(gamma > 0.0)) throw std::invalid_argument("voodoo_ref: gamma must be positive");

@@ -53,6 +53,10 @@ struct CombineInputs {
   Rgba texture;         // output of TMU0 (after its grTexCombine), 0..255
   Rgba constant;        // grConstantColorValue, 0..255
   int depth_alpha = 0;  // GR_COMBINE_LOCAL_DEPTH: bits 15..8 of the clamped 16-bit Z, 0..255
+  // grAlphaControlsITRGBLighting(FXTRUE), fbzColorPath's local-select override: the colour
+  // unit's local RGB is `constant` where bit 7 of texture.a is set, else `iterated`, whatever
+  // grColorCombine's local says (MAME's combine_color).
+  bool alpha_controls_itrgb = false;
 };
 
 // The shared datapath of one channel of any combine unit:
@@ -76,10 +80,22 @@ Rgba combine_local(const CombineConfig& color, const CombineConfig& alpha, const
 Rgba combine_fbi(const CombineConfig& color, const CombineConfig& alpha, const CombineInputs& in);
 
 // One TMU's combine: local = this TMU's filtered texel, other = the upstream TMU's output
-// (kNoUpstreamTmu for the last TMU). Factors 4 (DETAIL) and 5 (LOD_FRACTION) are modelled as a
-// source of 0 (so their ONE_MINUS forms are 255): no LOD is computed here.
-Rgba combine_tmu(const TexCombineConfig& config, const Rgba& texel, const Rgba& upstream);
+// (kNoUpstreamTmu for the last TMU). Factors 4 (DETAIL) and 5 (LOD_FRACTION) take `detail` and
+// `lod_fraction` (0..255, see detail_factor; the fraction is the low 8 bits of the 8.8 LOD).
+Rgba combine_tmu(const TexCombineConfig& config, const Rgba& texel, const Rgba& upstream,
+                 int detail = 0, int lod_fraction = 0);
 inline constexpr Rgba kNoUpstreamTmu{0, 0, 0, 0};
+
+// The TMU's detail factor at LOD `lod_88` (8.8 fixed point, after bias, dither and the clamp
+// to [lodmin, lodmax]) for grTexDetailControl's register fields: bias (-32..31, whole LODs),
+// scale (0..7) and max (0..255). MAME's TMU: 0 when bias * 256 <= lod_88, else
+// ((bias * 256 - lod_88) << scale) >> 8, limited to max. (MAME stores the shifted value in a u8
+// before the limit, which wraps from 256 up; the hardware's limit is taken as saturating here.)
+int detail_factor(int lod_88, int detail_bias, int detail_scale, int detail_max);
+
+// grTexDetailControl's tDetail fields as the driver packs them (ditex.c): max is
+// (FxU32)(detail_max * 255.0f).
+int detail_max_field(float detail_max);
 
 // ---------------------------------------------------------------------------------------------
 // Texels and sampling.
@@ -170,6 +186,13 @@ double w_buffer_code_to_oow(int code);
 // Z-buffer code: ooz (65535/z, larger is nearer) floored and clamped to 0..0xFFFF, then `bias`
 // added and clamped again.
 int z_buffer_code(double ooz, std::int16_t bias = 0);
+
+// The depth test (GR_CMP_*): `source OP stored`, where stored is the aux buffer's code and
+// source the pixel's (biased) code, or in the COMPARE_TO_BIAS modes (fbzMode bit 20) the
+// zaColor depth field, i.e. grDepthBiasLevel as an unsigned 16-bit value (MAME's depth_test).
+// The pixel's own code, without bias, is what a passing pixel writes.
+bool depth_test_passes(int function, int source, int stored);
+int compare_to_bias_source(std::int16_t bias_level);
 
 // ---------------------------------------------------------------------------------------------
 // Gamma (scan-out only; the frame buffer and LFB reads are pre-gamma).

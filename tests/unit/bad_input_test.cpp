@@ -594,9 +594,7 @@ TEST_F(BadInputTest, UndefinedLfbFormatsAreInvalidEnumNotUnsupported) {
   // Defined but not implemented.
   expect_all_rejected(
       GLIDESHIM_ERR_UNSUPPORTED,
-      {{"grLfbWriteRegion", [] { EXPECT_EQ(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_RLE16, 1, 1, 2, words), FXFALSE); }},
-       {"grDepthBufferMode", [] { grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER_COMPARE_TO_BIAS); }},
-       {"grDepthBufferMode", [] { grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER_COMPARE_TO_BIAS); }}},
+      {{"grLfbWriteRegion", [] { EXPECT_EQ(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_RLE16, 1, 1, 2, words), FXFALSE); }}},
       "defined, not implemented");
 }
 
