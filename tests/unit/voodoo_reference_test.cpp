@@ -747,4 +747,55 @@ TEST(VoodooRefGamma, ScanOutInterpolatesBetweenClutEntries) {
   EXPECT_EQ(voodoo_ref::gamma_scan_out(0x8410, clut), (Rgba{173, 171, 173, 255}));
 }
 
+TEST(VoodooRefTmuCombine, DetailFactorIsTheShiftedDistanceBelowTheBiasLimitedToMax) {
+  // Bias 4 whole LODs = 1024 in 8.8; LOD 2.5 = 640: (384 << 2) >> 8 = 6.
+  EXPECT_EQ(voodoo_ref::detail_factor(640, 4, 2, 255), 6);
+  EXPECT_EQ(voodoo_ref::detail_factor(640, 4, 7, 255), 192);   // (384 << 7) >> 8
+  EXPECT_EQ(voodoo_ref::detail_factor(640, 4, 7, 100), 100);   // limited to max
+  EXPECT_EQ(voodoo_ref::detail_factor(0, 31, 7, 255), 255);    // saturates, no 8-bit wrap
+  EXPECT_EQ(voodoo_ref::detail_factor(1024, 4, 7, 255), 0);    // LOD at the bias: zero
+  EXPECT_EQ(voodoo_ref::detail_factor(1100, 4, 7, 255), 0);    // beyond it: zero
+  EXPECT_EQ(voodoo_ref::detail_factor(0, -1, 3, 255), 0);      // a negative bias is below LOD 0
+  EXPECT_EQ(voodoo_ref::detail_max_field(0.5f), 127);
+  EXPECT_EQ(voodoo_ref::detail_max_field(1.0f), 255);
+  EXPECT_THROW(voodoo_ref::detail_factor(0, 32, 0, 0), std::invalid_argument);
+  EXPECT_THROW(voodoo_ref::detail_factor(0, 0, 8, 0), std::invalid_argument);
+}
+
+TEST(VoodooRefTmuCombine, DetailAndLodFractionFactorsFeedTheTmuCombine) {
+  // BLEND_LOCAL on a white texel: ((0 - 255) * (f + 1) >> 8) + 255.
+  const TexCombineConfig detail{GR_COMBINE_FUNCTION_BLEND_LOCAL, GR_COMBINE_FACTOR_DETAIL_FACTOR,
+                                GR_COMBINE_FUNCTION_BLEND_LOCAL, GR_COMBINE_FACTOR_LOD_FRACTION,
+                                false, false};
+  const Rgba out = voodoo_ref::combine_tmu(detail, Rgba{255, 255, 255, 255},
+                                           voodoo_ref::kNoUpstreamTmu, 99, 149);
+  EXPECT_EQ(out.r, ((-255 * 100) >> 8) + 255);  // detail 99
+  EXPECT_EQ(out.a, ((-255 * 150) >> 8) + 255);  // LOD fraction 149: 105
+}
+
+TEST(VoodooRefCombine, AlphaControlsItrgbPicksTheLocalByTextureAlphaBitSeven) {
+  const CombineConfig local{GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE,
+                            GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_NONE, false};
+  CombineInputs in;
+  in.iterated = {10, 20, 30, 40};
+  in.constant = {200, 210, 220, 230};
+  in.alpha_controls_itrgb = true;
+  in.texture = {0, 0, 0, 0x80};
+  EXPECT_EQ(voodoo_ref::combine_fbi(local, local, in), (Rgba{200, 210, 220, 40}));
+  in.texture.a = 0x7F;
+  EXPECT_EQ(voodoo_ref::combine_fbi(local, local, in), (Rgba{10, 20, 30, 40}));
+}
+
+TEST(VoodooRefDepth, CompareToBiasComparesTheUnsignedBiasWithTheStoredCode) {
+  EXPECT_EQ(voodoo_ref::compare_to_bias_source(-3), 65533);
+  EXPECT_EQ(voodoo_ref::compare_to_bias_source(1000), 1000);
+  EXPECT_TRUE(voodoo_ref::depth_test_passes(GR_CMP_LESS, 1000, 1001));
+  EXPECT_FALSE(voodoo_ref::depth_test_passes(GR_CMP_LESS, 1000, 1000));
+  EXPECT_TRUE(voodoo_ref::depth_test_passes(GR_CMP_GEQUAL, 1000, 1000));
+  EXPECT_TRUE(voodoo_ref::depth_test_passes(GR_CMP_NOTEQUAL, 1000, 999));
+  EXPECT_FALSE(voodoo_ref::depth_test_passes(GR_CMP_NEVER, 0, 0));
+  EXPECT_TRUE(voodoo_ref::depth_test_passes(GR_CMP_ALWAYS, 0, 1));
+  EXPECT_THROW(voodoo_ref::depth_test_passes(8, 0, 0), std::invalid_argument);
+}
+
 }  // namespace
