@@ -24,9 +24,12 @@ class PipelineState {
                               GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_ITERATED, false};
     context.color_path.color = written;
     context.color_path.alpha = written;
-    // grLfbLock clears fbzMode's depth-bias enable for the lock, so neither the depth test nor the
-    // fog table sees grDepthBiasLevel.
-    context.depth.bias_level = 0;
+    // grLfbLock loads zaColor with the lock's constant depth and clears fbzMode's depth-bias
+    // enable: neither the depth test nor the fog table sees grDepthBiasLevel, and the
+    // COMPARE_TO_BIAS modes compare the constant depth with the stored one.
+    context.depth.bias_level = compares_to_bias(context.depth.mode)
+                                   ? static_cast<FxI16>(context.lfb.write_depth)
+                                   : FxI16{0};
     // The aux buffer is written per the depth mask even with depth buffering off (MAME's
     // write_pixel); GL writes depth only through its depth test, so that test passes always.
     if (context.depth.mode == GR_DEPTHBUFFER_DISABLE && context.depth.mask) {

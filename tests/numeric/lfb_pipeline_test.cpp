@@ -172,6 +172,31 @@ TEST_F(LfbPipelineTest, WBufferCodesAreTestedAndWrittenAsCodes) {
   expect_no_error();
 }
 
+TEST_F(LfbPipelineTest, CompareToBiasModesCompareTheLocksConstantDepth) {
+  // zaColor holds the lock's constant depth, so that is what "bias OP stored" compares; each
+  // pixel still writes its own depth code.
+  grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER_COMPARE_TO_BIAS);
+  ASSERT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
+  grDepthBufferFunction(GR_CMP_LESS);
+  grDepthMask(FXTRUE);
+  grBufferClear(0, 0, 0x8000);
+  grDepthBiasLevel(static_cast<FxI16>(0xF000u));  // would fail LESS against 0x8000
+  grLfbConstantDepth(0x4000);                       // passes
+  pipeline_write(GR_LFBWRITEMODE_565_DEPTH, [](std::uint8_t *base, FxU32 stride) {
+    put32(base, stride, 0, 0, 0x90000000u | 0x001F);  // its own code would fail too
+  });
+  grLfbConstantDepth(0xC000);  // fails
+  pipeline_write(GR_LFBWRITEMODE_565_DEPTH, [](std::uint8_t *base, FxU32 stride) {
+    put32(base, stride, 1, 0, 0x10000000u | 0x001F);  // its own code would pass
+  });
+  EXPECT_EQ(pixel(0, 0), 0x001F);
+  EXPECT_EQ(pixel(0, 0, GR_BUFFER_AUXBUFFER), 0x9000) << "the pixel writes its own code";
+  EXPECT_EQ(pixel(1, 0), 0);
+  EXPECT_EQ(pixel(1, 0, GR_BUFFER_AUXBUFFER), 0x8000);
+  EXPECT_EQ(glide_shim::current().depth.bias_level, static_cast<FxI16>(0xF000u)) << "restored after the unlock";
+  expect_no_error();
+}
+
 TEST_F(LfbPipelineTest, Za16PipelineWritesDepthOnlyThroughTheDepthTest) {
   grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER);
   grDepthBufferFunction(GR_CMP_LESS);
