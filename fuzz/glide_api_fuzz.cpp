@@ -41,7 +41,10 @@ using glide_shim::GlideContext;
 // of the same values may change.
 bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }  // NaN equals NaN
 bool same(const glide_shim::ColorPathState &a, const glide_shim::ColorPathState &b) {
-  return a.color == b.color && a.alpha == b.alpha && a.constant_color == b.constant_color;
+  return a.color == b.color && a.alpha == b.alpha && a.constant_color == b.constant_color &&
+         a.alpha_controls_itrgb == b.alpha_controls_itrgb && a.delta0 == b.delta0 &&
+         same(a.iterated4[0], b.iterated4[0]) && same(a.iterated4[1], b.iterated4[1]) &&
+         same(a.iterated4[2], b.iterated4[2]) && same(a.iterated4[3], b.iterated4[3]);
 }
 bool same(const glide_shim::BlendState &a, const glide_shim::BlendState &b) {
   return a.rgb_src == b.rgb_src && a.rgb_dst == b.rgb_dst && a.alpha_src == b.alpha_src &&
@@ -80,7 +83,8 @@ bool same(const glide_shim::TmuState &a, const glide_shim::TmuState &b) {
   return a.clamp_s == b.clamp_s && a.clamp_t == b.clamp_t && a.min_filter == b.min_filter &&
          a.mag_filter == b.mag_filter && a.mipmap_mode == b.mipmap_mode &&
          a.lod_blend == b.lod_blend && same(a.lod_bias, b.lod_bias) && a.combine == b.combine &&
-         same(a.source, b.source);
+         a.detail_bias == b.detail_bias && a.detail_scale == b.detail_scale &&
+         a.detail_max == b.detail_max && same(a.source, b.source);
 }
 
 struct Snapshot {
@@ -417,7 +421,7 @@ void polygon(FuzzedDataProvider &in, float span) {
 }
 
 void one_call(FuzzedDataProvider &in, float span) {
-  switch (in.ConsumeIntegralInRange(0, 55)) {
+  switch (in.ConsumeIntegralInRange(0, 59)) {
     case 0: {
       const int f = enum_value(in, 0, 0x10), k = enum_value(in, 0, 0xd);
       const int l = enum_value(in, 0, 2), o = enum_value(in, 0, 2);
@@ -774,6 +778,31 @@ void one_call(FuzzedDataProvider &in, float span) {
     case 54:
       state_round_trip();
       break;
+    case 55: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const int bias = enum_value(in, -32, 31);
+      const FxU8 scale = in.ConsumeIntegral<FxU8>();
+      const float max = coordinate(in, 1.0f);
+      checked("grTexDetailControl", [&] { grTexDetailControl(tmu, bias, scale, max); });
+      break;
+    }
+    case 56: {
+      const FxBool enable = boolean(in);
+      checked("grAlphaControlsITRGBLighting", [&] { grAlphaControlsITRGBLighting(enable); });
+      break;
+    }
+    case 57: {
+      const float a = coordinate(in, 255.0f), r = coordinate(in, 255.0f),
+                  g = coordinate(in, 255.0f), b = coordinate(in, 255.0f);
+      checked("grConstantColorValue4", [&] { grConstantColorValue4(a, r, g, b); });
+      break;
+    }
+    case 58: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const int function = enum_value(in, GR_TEXTURECOMBINE_ZERO, GR_TEXTURECOMBINE_ONE);
+      checked("grTexCombineFunction", [&] { grTexCombineFunction(tmu, function); });
+      break;
+    }
     default:
       // Closing and reopening: every group goes back to grSstWinOpen's defaults.
       checked("grSstWinClose", [] { grSstWinClose(); });
