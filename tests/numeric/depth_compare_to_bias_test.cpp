@@ -6,6 +6,8 @@
 #include "glide_window.h"
 #include "voodoo_reference.h"
 
+#include <GL/gl.h>
+
 #include <random>
 #include <string>
 #include <vector>
@@ -116,6 +118,53 @@ TEST_F(DepthCompareToBiasTest, WBufferComparesTheBiasLevelWithTheStoredCode) {
   style.oow = 0.0123f;
   const int code = voodoo_ref::w_buffer_code(0.0123f);
   check_mode(GR_DEPTHBUFFER_WBUFFER_COMPARE_TO_BIAS, style, code);
+}
+
+TEST_F(DepthCompareToBiasTest, EveryBufferLevelAroundTheBiasCodeGoesTheWayItsCodeDoes) {
+  // 4096 consecutive 24-bit levels around the levels of code 1000 (about 256 a code in Z mode),
+  // written through plain GL: the levels next to each code boundary, which LFB-written codes
+  // never reach. The stored code of a pixel is what an aux-buffer read returns.
+  grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER_COMPARE_TO_BIAS);
+  grDepthBiasLevel(1000);
+  constexpr double kTop = 16777215.0;
+  const double first_level = std::floor(1000.0 / 65535.0 * kTop) - 2048.0;
+  std::vector<float> levels(kWidth * kHeight);
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    levels[i] = static_cast<float>((first_level + static_cast<double>(i)) / kTop);
+  }
+  using DrawPixels = void (*)(GLsizei, GLsizei, GLenum, GLenum, const void *);
+  using WindowPos = void (*)(GLint, GLint);
+  using Enable = void (*)(GLenum);
+  using DepthFunc = void (*)(GLenum);
+  for (GrCmpFnc_t function = GR_CMP_LESS; function <= GR_CMP_GEQUAL; ++function) {
+    SCOPED_TRACE("function " + std::to_string(function));
+    grDepthBufferFunction(function);
+    ASSERT_TRUE(glideShimBeginGL());
+    reinterpret_cast<Enable>(glideShimGetProcAddress("glEnable"))(GL_DEPTH_TEST);
+    reinterpret_cast<DepthFunc>(glideShimGetProcAddress("glDepthFunc"))(GL_ALWAYS);
+    reinterpret_cast<WindowPos>(glideShimGetProcAddress("glWindowPos2i"))(0, 0);
+    reinterpret_cast<DrawPixels>(glideShimGetProcAddress("glDrawPixels"))(
+        kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, levels.data());
+    glideShimEndGL();
+    grDepthMask(FXFALSE);  // the depth pixels drew the raster colour too: black, depth kept
+    grBufferClear(0x00000000u, 0, 0);
+    const std::vector<FxU16> stored = read_codes();
+    draw_rect(0, 0, kWidth, kHeight, white_vertex());
+    const std::vector<FxU16> frame = read_buffer();
+    int passed = 0, failed = 0, wrong = 0;
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      const bool pass = voodoo_ref::depth_test_passes(function, 1000, stored[i]);
+      passed += pass, failed += !pass;
+      if (frame[i] != (pass ? 0xFFFF : 0) && ++wrong <= 3) {
+        ADD_FAILURE() << "pixel " << i << " stored code " << stored[i] << ": want "
+                      << (pass ? "drawn" : "not drawn");
+      }
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(passed, 0);
+    EXPECT_GT(failed, 0);
+  }
+  expect_no_error();
 }
 
 TEST_F(DepthCompareToBiasTest, NotEqualDrawsEachPixelOnceAcrossBothSides) {
