@@ -692,6 +692,9 @@ FX_ENTRY FxBool FX_CALL grSstWinOpen(FxU32 hWnd,
                                      int nAuxBuffers);
 FX_ENTRY void   FX_CALL grSstWinClose(void);
 FX_ENTRY FxBool FX_CALL grSstControl(FxU32 code);
+/* Writes one raw register of a chip (gsst.c; register numbers from gsstdef.h). */
+typedef int GrSstRegister;
+FX_ENTRY void FX_CALL grSstConfigPipeline(GrChipID_t chip, GrSstRegister reg, FxU32 value);
 FX_ENTRY void   FX_CALL grSstOrigin(GrOriginLocation_t origin);
 FX_ENTRY FxU32  FX_CALL grSstScreenWidth(void);
 FX_ENTRY FxU32  FX_CALL grSstScreenHeight(void);

@@ -46,6 +46,40 @@ FX_ENTRY void  FX_CALL guFogGenerateLinear(GrFog_t fogtable[],
 FX_ENTRY FxU32 FX_CALL guEndianSwapWords(FxU32 value);
 FX_ENTRY FxU16 FX_CALL guEndianSwapBytes(FxU16 value);
 
+/* ---- multipass texturing: two "virtual TMUs" drawn in two passes on one TMU (gump.h) ---- */
+#define GLIDE_NUM_VIRTUAL_TMU 2
+
+typedef FxU32 GrMPTextureCombineFnc_t;
+#define GR_MPTEXTURECOMBINE_ADD        0x0
+#define GR_MPTEXTURECOMBINE_MULTIPLY   0x1
+#define GR_MPTEXTURECOMBINE_DETAIL0    0x2
+#define GR_MPTEXTURECOMBINE_DETAIL1    0x3
+#define GR_MPTEXTURECOMBINE_TRILINEAR0 0x4
+#define GR_MPTEXTURECOMBINE_TRILINEAR1 0x5
+#define GR_MPTEXTURECOMBINE_SUBTRACT   0x6
+
+typedef struct {
+  GrMipMapId_t            mmid[GLIDE_NUM_VIRTUAL_TMU];
+  GrMPTextureCombineFnc_t tc_fnc;
+} GrMPState;
+
+FX_ENTRY void FX_CALL guMPInit(void);
+FX_ENTRY void FX_CALL guMPTexCombineFunction(GrMPTextureCombineFnc_t tc);
+FX_ENTRY void FX_CALL guMPTexSource(GrChipID_t virtual_tmu, GrMipMapId_t mmid);
+FX_ENTRY void FX_CALL guMPDrawTriangle(const GrVertex *a, const GrVertex *b,
+                                       const GrVertex *c);
+
+/* ---- obsolete entry points the SST-1 driver still exports (gump.c, gmovie.c) ---- */
+FX_ENTRY void FX_CALL guFbReadRegion(const int srcX, const int srcY, const int w,
+                                     const int h, const void *dst,
+                                     const int strideInBytes);
+FX_ENTRY void FX_CALL guFbWriteRegion(const int dstX, const int dstY, const int w,
+                                      const int h, const void *src,
+                                      const int strideInBytes);
+FX_ENTRY void FX_CALL guMovieStart(void);
+FX_ENTRY void FX_CALL guMovieStop(void);
+FX_ENTRY void FX_CALL guMovieSetName(const char *name);
+
 /* ---- .3df texture files ---- */
 FX_ENTRY FxBool FX_CALL gu3dfGetInfo(const char *filename, Gu3dfInfo *info);
 FX_ENTRY FxBool FX_CALL gu3dfLoad(const char *filename, Gu3dfInfo *data);
