@@ -1,7 +1,9 @@
 // guMP* multipass texturing (gump.c, ddgump.c): guMPDrawTriangle against the same passes drawn
 // by hand with guTexSource, grTexCombine, the blender and the depth test, as the driver sets
-// them; the colours the ADD and MULTIPLY passes leave; the state restored afterwards; and the
-// refused calls (bad function, virtual TMU, mip map, pointers, and states one TMU cannot split).
+// them (fog colour and colour-combine bias kept out of the later passes, MULTIPLY's third fog
+// pass included); the colours the ADD and MULTIPLY passes leave; the state restored afterwards;
+// and the refused calls (bad function, virtual TMU, mip map, pointers, and states one TMU cannot
+// split).
 #include "glide_window.h"
 
 #include "context.h"
@@ -65,6 +67,33 @@ class GuMultipassTest : public GlideWindowTest {
     d.x = 8, d.y = 40;
     guMPDrawTriangle(&a, &b, &c);
     guMPDrawTriangle(&a, &c, &d);
+  }
+
+  // Fog from the iterated alpha, and a colour combine with a local bias (texture + iterated
+  // RGB): the state whose fog colour and bias the driver keeps out of the later passes.
+  static GrVertex fogged_style() {
+    GrVertex v = style();
+    v.r = 20.0f, v.g = 30.0f, v.b = 40.0f, v.a = 96.0f;
+    return v;
+  }
+  static void fog_and_bias() {
+    grFogMode(GR_FOG_WITH_ITERATED_ALPHA);
+    grFogColorValue(0x00406080);
+    guColorCombineFunction(GR_COLORCOMBINE_TEXTURE_ADD_ITRGB);
+  }
+  static void draw_fogged_multipass_rect() {
+    GrVertex a = fogged_style(), b = fogged_style(), c = fogged_style(), d = fogged_style();
+    a.x = 8, a.y = 8;
+    b.x = 40, b.y = 8;
+    c.x = 40, c.y = 40;
+    d.x = 8, d.y = 40;
+    guMPDrawTriangle(&a, &b, &c);
+    guMPDrawTriangle(&a, &c, &d);
+  }
+  static void source_with_replace(GrMipMapId_t mmid) {
+    guTexSource(mmid);
+    grTexCombine(GR_TMU0, GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE,
+                 GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, FXFALSE, FXFALSE);
   }
 
   GrMipMapId_t first_ = GR_NULL_MIPMAP_HANDLE;
@@ -154,6 +183,73 @@ TEST_F(GuMultipassTest, Detail0EqualsItsTwoCombinesDrawnByHand) {
   expect_no_error();
   EXPECT_EQ(multipass, read_buffer());
   EXPECT_NE(multipass[20 * kWidth + 20], 0);
+}
+
+// ADD with fog and a biased colour combine: the second pass is added without the fog colour
+// (GR_FOG_ADD2) and without the combine's local term.
+TEST_F(GuMultipassTest, AddKeepsFogColourAndBiasOutOfTheSecondPass) {
+  fog_and_bias();
+  draw_fogged_multipass_rect();
+  expect_no_error();
+  const std::vector<FxU16> multipass = read_buffer();
+
+  clear();
+  source_with_replace(first_);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  source_with_replace(second_);
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE);
+  grDepthBufferFunction(GR_CMP_EQUAL);
+  grDepthMask(FXFALSE);
+  grFogMode(GR_FOG_WITH_ITERATED_ALPHA | GR_FOG_ADD2);
+  grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
+                 GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  expect_no_error();
+  EXPECT_EQ(multipass, read_buffer());
+
+  // The fog colour and bias counted twice would give a different picture.
+  clear();
+  source_with_replace(first_);
+  fog_and_bias();
+  draw_rect(8, 8, 40, 40, fogged_style());
+  source_with_replace(second_);
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE);
+  grDepthBufferFunction(GR_CMP_EQUAL);
+  grDepthMask(FXFALSE);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  EXPECT_NE(multipass, read_buffer());
+}
+
+// MULTIPLY with fog: the first pass without fog colour and bias, the texel multiplying the
+// destination without fog, then an untextured pass adding fog x fog colour (GR_FOG_MULT2).
+TEST_F(GuMultipassTest, MultiplyWithFogAddsTheFogColourInAThirdPass) {
+  fog_and_bias();
+  guMPTexCombineFunction(GR_MPTEXTURECOMBINE_MULTIPLY);
+  draw_fogged_multipass_rect();
+  expect_no_error();
+  const std::vector<FxU16> multipass = read_buffer();
+
+  clear();
+  source_with_replace(first_);
+  grFogMode(GR_FOG_WITH_ITERATED_ALPHA | GR_FOG_ADD2);
+  grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
+                 GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  source_with_replace(second_);
+  grAlphaBlendFunction(GR_BLEND_DST_COLOR, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+  grDepthBufferFunction(GR_CMP_EQUAL);
+  grDepthMask(FXFALSE);
+  grFogMode(GR_FOG_DISABLE);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  const std::vector<FxU16> without_third_pass = read_buffer();
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE, GR_BLEND_ONE);
+  grFogMode(GR_FOG_WITH_ITERATED_ALPHA | GR_FOG_MULT2);
+  grColorCombine(GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_ITERATED,
+                 GR_COMBINE_OTHER_ITERATED, FXFALSE);
+  draw_rect(8, 8, 40, 40, fogged_style());
+  expect_no_error();
+  EXPECT_EQ(multipass, read_buffer());
+  EXPECT_NE(multipass, without_third_pass);
 }
 
 TEST_F(GuMultipassTest, RestoresTheStateItChangedAndLeavesTheSecondMipMapSelected) {
