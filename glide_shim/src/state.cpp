@@ -1,7 +1,8 @@
 // grGlideGetState / grGlideSetState and grDisableAllEffects. The saved state is every setting
 // that changes a pixel (combine, blend and tests, chroma key, depth, clip, masks, render buffer,
-// origin, hints, fog with its table, the TMU's modes, combine and source, and the LFB write layout
-// and constants, which the SST-1 GrState holds in lfbMode and beside it), packed field by field
+// origin, hints, fog with its table, the TMU's modes, combine and source, the LFB write layout
+// and constants, which the SST-1 GrState holds in lfbMode and beside it, and the gu texture
+// manager's current mip map, which it holds as current_mm), packed field by field
 // into the program's opaque GrState, which is a plain 312-byte block as in 3dfx's glide.h.
 #include "context.h"
 
@@ -56,6 +57,7 @@ struct PackedState {
   FxU8 lfb_mode;  // lfbMode's write bits: RGBA lanes (bits 0-1), byte swizzle (2), word swap (3)
   FxU8 lfb_constant_alpha;
   FxU16 lfb_constant_depth;
+  FxI32 gu_current_mipmap;  // guTexSource's id, which the SST-1 GrState keeps as current_mm
 };
 #pragma pack(pop)
 
@@ -137,6 +139,7 @@ PackedState save(const glide_shim::GlideContext &ctx) {
                                  (layout.swap_words ? 8 : 0));
   s.lfb_constant_alpha = ctx.lfb.constant_alpha;
   s.lfb_constant_depth = ctx.lfb.constant_depth;
+  s.gu_current_mipmap = ctx.gu_textures.current;
   return s;
 }
 
@@ -187,6 +190,7 @@ void restore(glide_shim::GlideContext &ctx, const PackedState &s) {
   ctx.lfb.layout = {s.lfb_mode & 3, (s.lfb_mode & 4) != 0, (s.lfb_mode & 8) != 0};
   ctx.lfb.constant_alpha = s.lfb_constant_alpha;
   ctx.lfb.constant_depth = s.lfb_constant_depth;
+  ctx.gu_textures.current = s.gu_current_mipmap;
 }
 
 }  // namespace

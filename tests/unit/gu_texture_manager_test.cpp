@@ -189,6 +189,20 @@ TEST_F(GuTextureManagerTest, ReopeningTheWindowResetsTheManager) {
   EXPECT_EQ(allocate_small_p8(), 0u);
 }
 
+TEST_F(GuTextureManagerTest, SavedStateKeepsTheCurrentMipMap) {
+  // The SST-1 GrState holds guTexSource's id (current_mm): grGlideSetState brings it back.
+  const GrMipMapId_t first = allocate_full_565();
+  const GrMipMapId_t second = allocate_small_p8();
+  guTexSource(first);
+  GrState saved;
+  grGlideGetState(&saved);
+  guTexSource(second);
+  EXPECT_EQ(guTexGetCurrentMipMap(GR_TMU0), second);
+  grGlideSetState(&saved);
+  expect_no_error();
+  EXPECT_EQ(guTexGetCurrentMipMap(GR_TMU0), first);
+}
+
 TEST_F(GuTextureManagerTest, LevelDownloadsAdvanceTheSourcePointer) {
   const GrMipMapId_t id = allocate(GR_MIPMAPLEVELMASK_EVEN, GR_TEXFMT_ARGB_1555, GR_LOD_1,
                                    GR_LOD_64, GR_ASPECT_1x2);
