@@ -26,7 +26,7 @@ std::string file_bytes(const fs::path &path) {
 
 // Runs tests/sdk/<name> for `frames` frames with the frame dump on; returns the dump directory.
 fs::path run_program(const std::string &name, int frames) {
-  const fs::path dir = fs::path(output_path("sdk_" + name));
+  const fs::path dir = fs::path(test_output_path("sdk_" + name));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string command = "GLIDESHIM_DUMP_DIR=" + dir.string() + " " + SDK_PROGRAM_DIR +

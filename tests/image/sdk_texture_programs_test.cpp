@@ -23,7 +23,7 @@ std::string file_bytes(const fs::path &path) {
 
 // Runs sdk_<name> -n `frames` in tests/sdk/data with the frame dump on; returns the dump dir.
 fs::path run_program(const std::string &name, int frames) {
-  const fs::path dir = fs::path(output_path("sdk_" + name));
+  const fs::path dir = fs::path(test_output_path("sdk_" + name));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string command = "cd " + std::string(SDK_DATA_DIR) + " && GLIDESHIM_DUMP_DIR=" +

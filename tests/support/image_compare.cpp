@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -13,6 +14,13 @@ namespace fs = std::filesystem;
 std::string output_path(const std::string &file_name) {
   fs::create_directories(GLIDESHADOWS_FAILURE_DIR);
   return (fs::path(GLIDESHADOWS_FAILURE_DIR) / file_name).string();
+}
+
+std::string test_output_path(const std::string &name) {
+  const ::testing::TestInfo *test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string test_name = test != nullptr ? std::string(test->test_suite_name()) + "." + test->name() : "";
+  std::replace(test_name.begin(), test_name.end(), '/', '_');  // parameterised tests' names
+  return output_path(name + "_" + test_name);
 }
 
 ::testing::AssertionResult matches_reference(const std::string &name,

@@ -20,3 +20,6 @@ struct ImageTolerance {
 
 // A path in the build tree for a test's output image.
 std::string output_path(const std::string &file_name);
+// output_path of `name` followed by the running test's name: a place of its own for each test,
+// since ctest runs the tests of one program at the same time.
+std::string test_output_path(const std::string &name);
