@@ -25,18 +25,10 @@ static void build_checker(void) {
 /* A quad over [x0, x1) x [y0, y1) with w from w_top to w_bottom and s, t up to s1, t1. */
 static void quad(float x0, float y0, float x1, float y1, float w_top, float w_bottom, float s1,
                  float t1) {
-  GrVertex v[4];
   const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
   const float ws[4] = {w_top, w_top, w_bottom, w_bottom};
   const float ss[4] = {0, s1, s1, 0}, ts[4] = {0, 0, t1, t1};
-  int k;
-  for (k = 0; k < 4; ++k) {
-    v[k] = sdk_vertex(xs[k], ys[k], ws[k], 0, 0, 0, 255);
-    v[k].tmuvtx[0].sow = ss[k] * v[k].oow;
-    v[k].tmuvtx[0].tow = ts[k] * v[k].oow;
-  }
-  grDrawTriangle(&v[0], &v[1], &v[2]);
-  grDrawTriangle(&v[0], &v[2], &v[3]);
+  sdk_textured_quad(xs, ys, ws, ss, ts);
 }
 
 int main(int argc, char **argv) {

@@ -34,19 +34,6 @@ static void texture_from(Gu3dfInfo *info, FxU32 address) {
   grTexSource(GR_TMU0, address, GR_MIPMAPLEVELMASK_BOTH, &tex);
 }
 
-static void textured_quad(const float *xs, const float *ys, const float *ws, const float *ss,
-                          const float *ts) {
-  GrVertex v[4];
-  int k;
-  for (k = 0; k < 4; ++k) {
-    v[k] = sdk_vertex(xs[k], ys[k], ws[k], 0, 0, 0, 255);
-    v[k].tmuvtx[0].sow = ss[k] * v[k].oow;
-    v[k].tmuvtx[0].tow = ts[k] * v[k].oow;
-  }
-  grDrawTriangle(&v[0], &v[1], &v[2]);
-  grDrawTriangle(&v[0], &v[2], &v[3]);
-}
-
 int main(int argc, char **argv) {
   Gu3dfInfo yiq, stripes;
   int frame, frames;
@@ -63,7 +50,7 @@ int main(int argc, char **argv) {
       const float ss[4] = {0, 768, 768, 0}, ts[4] = {0, 0, 2048, 2048};
       texture_from(&yiq, 0);
       grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
-      textured_quad(xs, ys, ws, ss, ts);
+      sdk_textured_quad(xs, ys, ws, ss, ts);
     }
     {
       /* 64x32 texels: s 0..256, t 0..128, drawn at 2x over 128x64 pixels. */
@@ -71,7 +58,7 @@ int main(int argc, char **argv) {
       const float ss[4] = {0, 256, 256, 0}, ts[4] = {0, 0, 128, 128};
       texture_from(&stripes, 65536);
       grTexMipMapMode(GR_TMU0, GR_MIPMAP_DISABLE, FXFALSE);
-      textured_quad(xs, ys, ws, ss, ts);
+      sdk_textured_quad(xs, ys, ws, ss, ts);
     }
     grBufferSwap(1);
   }

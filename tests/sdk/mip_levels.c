@@ -22,17 +22,9 @@ static void build_chain(void) {
 /* A floor over columns [x0, x1): far edge (w = 24) at the top, near edge (w = 1) at the bottom;
  * s repeats the texture 4 times across and t 12 times along. */
 static void floor_panel(float x0, float x1) {
-  GrVertex v[4];
   const float xs[4] = {x0, x1, x1, x0}, ys[4] = {20, 20, 230, 230}, ws[4] = {24, 24, 1, 1};
   const float ss[4] = {0, 1024, 1024, 0}, ts[4] = {0, 0, 3072, 3072};
-  int k;
-  for (k = 0; k < 4; ++k) {
-    v[k] = sdk_vertex(xs[k], ys[k], ws[k], 0, 0, 0, 255);
-    v[k].tmuvtx[0].sow = ss[k] * v[k].oow;
-    v[k].tmuvtx[0].tow = ts[k] * v[k].oow;
-  }
-  grDrawTriangle(&v[0], &v[1], &v[2]);
-  grDrawTriangle(&v[0], &v[2], &v[3]);
+  sdk_textured_quad(xs, ys, ws, ss, ts);
 }
 
 int main(int argc, char **argv) {

@@ -58,6 +58,21 @@ static GrVertex sdk_vertex(float x, float y, float w, float r, float g, float b,
   return v;
 }
 
+/* A textured quad from its four corners (screen x, y; w; s and t in texels of the largest level,
+ * 0..256 across it), drawn as two triangles with s/w and t/w as the TMU iterates them. */
+static inline void sdk_textured_quad(const float *xs, const float *ys, const float *ws,
+                                     const float *ss, const float *ts) {
+  GrVertex v[4];
+  int k;
+  for (k = 0; k < 4; ++k) {
+    v[k] = sdk_vertex(xs[k], ys[k], ws[k], 0, 0, 0, 255);
+    v[k].tmuvtx[0].sow = ss[k] * v[k].oow;
+    v[k].tmuvtx[0].tow = ts[k] * v[k].oow;
+  }
+  grDrawTriangle(&v[0], &v[1], &v[2]);
+  grDrawTriangle(&v[0], &v[2], &v[3]);
+}
+
 static int sdk_close(void) {
   grGlideShutdown();
   return sdk_errors == 0 ? 0 : 1;
