@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glide.h>
+#include <glideutl.h>
 
 #include "glide_shim.h"
 
@@ -223,6 +224,9 @@ class GlideContext {
   PerfStatsState perf{};
   TextureTarget texture_target{};
   GuTextureManager gu_textures{};
+  // guMP*'s two virtual TMUs and combine (gu_multipass.cpp). Like the driver's _gumpState it
+  // survives grSstWinOpen; only guMPInit resets it.
+  GrMPState multipass{{GR_NULL_MIPMAP_HANDLE, GR_NULL_MIPMAP_HANDLE}, GR_MPTEXTURECOMBINE_ADD};
   bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;

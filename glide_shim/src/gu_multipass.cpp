@@ -11,10 +11,6 @@ using glide_shim::current;
 
 namespace {
 
-// The driver keeps one multipass state for the whole library (_gumpState), not one per board.
-GrMPState multipass_state = {{GR_NULL_MIPMAP_HANDLE, GR_NULL_MIPMAP_HANDLE},
-                             GR_MPTEXTURECOMBINE_ADD};
-
 bool is_allocated(const glide_shim::GlideContext &ctx, GrMipMapId_t mmid) {
   return mmid < ctx.gu_textures.next_id;
 }
@@ -54,10 +50,11 @@ void pass_combine(GrMPTextureCombineFnc_t function, int pass, GrCombineFunction_
 }
 
 void select_pass(int pass) {
+  const GrMPState &state = current().multipass;
   GrCombineFunction_t combine;
   GrCombineFactor_t factor;
-  pass_combine(multipass_state.tc_fnc, pass, &combine, &factor);
-  guTexSource(multipass_state.mmid[pass]);
+  pass_combine(state.tc_fnc, pass, &combine, &factor);
+  guTexSource(state.mmid[pass]);
   grTexCombine(GR_TMU0, combine, factor, combine, factor, FXFALSE, FXFALSE);
 }
 
@@ -172,8 +169,9 @@ void draw_multiplied_passes(glide_shim::GlideContext &ctx, const SavedState &sav
 extern "C" {
 
 void guMPInit(void) {
-  for (GrMipMapId_t &mmid : multipass_state.mmid) mmid = GR_NULL_MIPMAP_HANDLE;
-  multipass_state.tc_fnc = GR_MPTEXTURECOMBINE_ADD;
+  GrMPState &state = current().multipass;
+  for (GrMipMapId_t &mmid : state.mmid) mmid = GR_NULL_MIPMAP_HANDLE;
+  state.tc_fnc = GR_MPTEXTURECOMBINE_ADD;
 }
 
 void guMPTexCombineFunction(GrMPTextureCombineFnc_t tc) {
@@ -183,7 +181,7 @@ void guMPTexCombineFunction(GrMPTextureCombineFnc_t tc) {
                          " is not a GR_MPTEXTURECOMBINE_* function");
     return;
   }
-  multipass_state.tc_fnc = tc;
+  current().multipass.tc_fnc = tc;
 }
 
 void guMPTexSource(GrChipID_t virtual_tmu, GrMipMapId_t mmid) {
@@ -199,7 +197,7 @@ void guMPTexSource(GrChipID_t virtual_tmu, GrMipMapId_t mmid) {
                                                 " was not allocated by guTexAllocateMemory");
     return;
   }
-  multipass_state.mmid[virtual_tmu] = mmid;
+  ctx.multipass.mmid[virtual_tmu] = mmid;
 }
 
 void guMPDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
@@ -222,14 +220,14 @@ void guMPDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
                "grAlphaControlsITRGBLighting, alpha test or chroma key is on)");
     return;
   }
-  if (multipass_state.tc_fnc == GR_MPTEXTURECOMBINE_SUBTRACT) {
+  if (ctx.multipass.tc_fnc == GR_MPTEXTURECOMBINE_SUBTRACT) {
     ctx.report(GLIDESHIM_ERR_UNSUPPORTED,
                "guMPDrawTriangle: GR_MPTEXTURECOMBINE_SUBTRACT is not implemented (the alpha "
                "blender cannot subtract)");
     return;
   }
   for (int pass = 0; pass < GLIDE_NUM_VIRTUAL_TMU; ++pass) {
-    if (!is_allocated(ctx, multipass_state.mmid[pass])) {
+    if (!is_allocated(ctx, ctx.multipass.mmid[pass])) {
       ctx.report(GLIDESHIM_ERR_INCONSISTENT,
                  "guMPDrawTriangle: virtual TMU " + std::to_string(pass) +
                      " has no mip map (call guMPTexSource first)");
@@ -237,7 +235,7 @@ void guMPDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
     }
   }
   const SavedState saved(ctx);
-  if (multipass_state.tc_fnc == GR_MPTEXTURECOMBINE_MULTIPLY) {
+  if (ctx.multipass.tc_fnc == GR_MPTEXTURECOMBINE_MULTIPLY) {
     draw_multiplied_passes(ctx, saved, a, b, c);
   } else {
     draw_added_passes(ctx, a, b, c);
