@@ -207,7 +207,9 @@ std::string tmu_sample_code(const PipelineKey &key) {
          "  vec2 uv = st / exp2(ilod);  // texel units of the level\n";
   } else {
     s << "  lod = u_lod_range.x;\n"
-         "  vec4 level = u_level;\n"
+         // The one level sampled is the first the atlas holds (lodmin, or the next one when
+         // evenOdd left lodmin out), so its row is 0: a constant row saves an add per tap.
+         "  vec4 level = vec4(0.0, u_level.yzw);\n"
          "  vec2 uv = st * u_level_scale;  // texel units of the level\n";
   }
   if (key.mag_bilinear == key.min_bilinear) {
