@@ -130,7 +130,11 @@ case "${1:-}" in
   sanitize)
     build_sanitized
     export_sanitizer_options
-    ctest --test-dir build-asan --output-on-failure -j2
+    # A failing test runs once more: LeakSanitizer's stop-the-world tracer now and then dies
+    # with SIGSEGV at exit while llvmpipe's threads wind down ("Tracer caught signal 11", after
+    # the test itself passed; 2 of 593 tests in one run, none in the next). A real finding
+    # fails both runs.
+    ctest --test-dir build-asan --output-on-failure -j2 --repeat until-pass:2
     ;;
   fuzz)
     build_fuzzers
