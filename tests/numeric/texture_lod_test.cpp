@@ -22,13 +22,7 @@ int level_of_color(FxU16 word) {
   return -1;
 }
 
-// The planar mapping every test draws: sow, tow and oow affine in screen x, y (as a plane in
-// perspective is), so both triangles of the quad share one gradient.
-struct Plane {
-  double s_dx, t_dy;   // 256-texel units per pixel of sow and tow
-  double oow_top, oow_bottom;
-  double oow(double y) const { return oow_top + (oow_bottom - oow_top) * y / 64.0; }
-};
+using Plane = TexturePlane;  // see glide_window.h
 
 class TextureLodTest : public GlideWindowTest {
  protected:
@@ -50,20 +44,6 @@ class TextureLodTest : public GlideWindowTest {
     GrTexInfo info{small, large, GR_ASPECT_1x1, GR_TEXFMT_RGB_565, texels.data()};
     grTexDownloadMipMap(GR_TMU0, 0, even_odd, &info);
     grTexSource(GR_TMU0, 0, even_odd, &info);
-  }
-
-  static void draw(const Plane &plane) {
-    GrVertex v[4];
-    const float xs[4] = {0, kWidth, kWidth, 0}, ys[4] = {0, 0, kHeight, kHeight};
-    for (int k = 0; k < 4; ++k) {
-      v[k] = vertex();
-      v[k].x = xs[k], v[k].y = ys[k];
-      v[k].oow = static_cast<float>(plane.oow(ys[k]));
-      v[k].tmuvtx[0].sow = static_cast<float>(plane.s_dx * xs[k]);
-      v[k].tmuvtx[0].tow = static_cast<float>(plane.t_dy * ys[k]);
-    }
-    grDrawTriangle(&v[0], &v[1], &v[2]);
-    grDrawTriangle(&v[0], &v[2], &v[3]);
   }
 
   // The hardware's LOD at the centre of row y before dither and clamp, in LOD units.
@@ -123,7 +103,7 @@ class TextureLodTest : public GlideWindowTest {
 TEST_F(TextureLodTest, NearestMipmappingPicksTheModelsLevelPerPixel) {
   load_chain(GR_LOD_256, GR_LOD_1);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   const std::set<int> seen = expect_levels(kFloor, GR_LOD_256, GR_LOD_1, 0, false,
                                            GR_MIPMAPLEVELMASK_BOTH);
   EXPECT_GE(seen.size(), 6u);  // levels 0..5 across the floor
@@ -136,7 +116,7 @@ TEST_F(TextureLodTest, BiasMovesTheLevelInDriverRoundedQuarters) {
   for (float bias : {1.0f, -0.75f, 0.3f, -0.5f, 2.6f}) {
     SCOPED_TRACE(bias);
     grTexLodBiasValue(GR_TMU0, bias);
-    draw(kFloor);
+    draw_plane(kFloor);
     expect_levels(kFloor, GR_LOD_256, GR_LOD_1, bias_quarters(bias), false,
                   GR_MIPMAPLEVELMASK_BOTH);
   }
@@ -149,7 +129,7 @@ TEST_F(TextureLodTest, LodIsClampedToTheChainsLevels) {
   load_chain(GR_LOD_64, GR_LOD_8);  // levels 2..5
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
   const Plane steep{1.5, 1.5, 1.0, 1.0 / 128.0};  // LOD 0.58 .. 7.6
-  draw(steep);
+  draw_plane(steep);
   const std::set<int> seen =
       expect_levels(steep, GR_LOD_64, GR_LOD_8, 0, false, GR_MIPMAPLEVELMASK_BOTH);
   EXPECT_EQ(seen, (std::set<int>{GR_LOD_64, GR_LOD_32, GR_LOD_16, GR_LOD_8}));
@@ -159,7 +139,7 @@ TEST_F(TextureLodTest, LodIsClampedToTheChainsLevels) {
 TEST_F(TextureLodTest, MipmapDisableSamplesOnlyTheLargestLevel) {
   load_chain(GR_LOD_256, GR_LOD_1);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_DISABLE, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   for (FxU16 word : read_buffer()) ASSERT_EQ(word, kLevelColor[GR_LOD_256]);
   expect_no_error();
 }
@@ -168,11 +148,11 @@ TEST_F(TextureLodTest, DitheredMipmappingNeedsTheHintAndAddsTheMatrixOverSixteen
   load_chain(GR_LOD_256, GR_LOD_1);
   // Without GR_HINT_ALLOW_MIPMAP_DITHER the driver leaves LOD dither off.
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST_DITHER, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   expect_levels(kFloor, GR_LOD_256, GR_LOD_1, 0, false, GR_MIPMAPLEVELMASK_BOTH);
   grHints(GR_HINT_ALLOW_MIPMAP_DITHER, 1);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST_DITHER, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   expect_levels(kFloor, GR_LOD_256, GR_LOD_1, 0, true, GR_MIPMAPLEVELMASK_BOTH);
   expect_no_error();
 }
@@ -180,7 +160,7 @@ TEST_F(TextureLodTest, DitheredMipmappingNeedsTheHintAndAddsTheMatrixOverSixteen
 TEST_F(TextureLodTest, ALevelTheEvenOddMaskLeftOutIsReplacedByTheNextSmaller) {
   load_chain(GR_LOD_256, GR_LOD_1, GR_MIPMAPLEVELMASK_ODD);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   const std::set<int> seen =
       expect_levels(kFloor, GR_LOD_256, GR_LOD_1, 0, false, GR_MIPMAPLEVELMASK_ODD);
   for (int level : seen) EXPECT_EQ(level % 2, 1) << level;
@@ -200,7 +180,7 @@ TEST_F(TextureLodTest, MagnificationAndMinificationFiltersFollowTheLod) {
   grTexClampMode(GR_TMU0, GR_TEXTURECLAMP_CLAMP, GR_TEXTURECLAMP_CLAMP);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
   auto blended_pixels = [&](const Plane &plane) {
-    draw(plane);
+    draw_plane(plane);
     int blended = 0;
     for (FxU16 word : read_buffer()) blended += word != 0xF800 && word != 0x001F;
     return blended;
@@ -229,12 +209,12 @@ TEST_F(TextureLodTest, LodFractionFactorIsTheFractionOfTheLod) {
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
   grTexCombine(GR_TMU0, GR_COMBINE_FUNCTION_BLEND_LOCAL, GR_COMBINE_FACTOR_LOD_FRACTION,
                GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, FXFALSE, FXFALSE);
-  draw(Plane{6.0, 6.0, 1.0, 1.0});
+  draw_plane(Plane{6.0, 6.0, 1.0, 1.0});
   const FxU16 want = static_cast<FxU16>((105 >> 3) << 11 | (105 >> 2) << 5 | (105 >> 3));
   for (FxU16 word : read_buffer()) ASSERT_EQ(word, want);
   // Without mip-mapping the LOD is lodmin, a whole number: fraction 0, (0 - 255) * 1 >> 8 + 255.
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_DISABLE, FXFALSE);
-  draw(Plane{6.0, 6.0, 1.0, 1.0});
+  draw_plane(Plane{6.0, 6.0, 1.0, 1.0});
   const FxU16 almost_white = static_cast<FxU16>((254 >> 3) << 11 | (254 >> 2) << 5 | (254 >> 3));
   for (FxU16 word : read_buffer()) ASSERT_EQ(word, almost_white);
   expect_no_error();
@@ -243,7 +223,7 @@ TEST_F(TextureLodTest, LodFractionFactorIsTheFractionOfTheLod) {
 TEST_F(TextureLodTest, OutOfRangeLodsAndBiasAreRefusedAndChangeNothing) {
   load_chain(GR_LOD_256, GR_LOD_1);
   grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
-  draw(kFloor);
+  draw_plane(kFloor);
   const std::vector<FxU16> before = read_buffer();
   FxU16 texel = 0;
   grTexDownloadMipMapLevel(GR_TMU0, 0, 9, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565,
@@ -258,7 +238,7 @@ TEST_F(TextureLodTest, OutOfRangeLodsAndBiasAreRefusedAndChangeNothing) {
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_OUT_OF_RANGE);
   grTexMipMapMode(GR_TMU0, 7, FXFALSE);
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_INVALID_ENUM);
-  draw(kFloor);
+  draw_plane(kFloor);
   EXPECT_EQ(read_buffer(), before);
 }
 

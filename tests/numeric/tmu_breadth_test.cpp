@@ -17,13 +17,7 @@ namespace {
 
 using glide_shim::current;
 
-// sow, tow and oow affine in screen x, y, as a plane in perspective is: both triangles of the
-// full-window quad share one gradient (256-texel units per pixel), 1/w runs top to bottom.
-struct Plane {
-  double s_dx, t_dy;
-  double oow_top, oow_bottom;
-  double oow(double y) const { return oow_top + (oow_bottom - oow_top) * y / 64.0; }
-};
+using Plane = TexturePlane;  // see glide_window.h
 
 class TmuBreadthTest : public GlideWindowTest {
  protected:
@@ -42,20 +36,6 @@ class TmuBreadthTest : public GlideWindowTest {
     grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
     grTexSource(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
     grTexMipMapMode(GR_TMU0, GR_MIPMAP_NEAREST, FXFALSE);
-  }
-
-  static void draw(const Plane &plane) {
-    GrVertex v[4];
-    const float xs[4] = {0, kWidth, kWidth, 0}, ys[4] = {0, 0, kHeight, kHeight};
-    for (int k = 0; k < 4; ++k) {
-      v[k] = vertex();
-      v[k].x = xs[k], v[k].y = ys[k];
-      v[k].oow = static_cast<float>(plane.oow(ys[k]));
-      v[k].tmuvtx[0].sow = static_cast<float>(plane.s_dx * xs[k]);
-      v[k].tmuvtx[0].tow = static_cast<float>(plane.t_dy * ys[k]);
-    }
-    grDrawTriangle(&v[0], &v[1], &v[2]);
-    grDrawTriangle(&v[0], &v[2], &v[3]);
   }
 
   // The hardware's LOD at the centre of row y in 8.8 before the clamp (no bias, no dither), and
@@ -94,7 +74,7 @@ TEST_F(TmuBreadthTest, DetailFactorFollowsTheLodPerPixel) {
     SCOPED_TRACE("bias " + std::to_string(setting.bias) + " scale " +
                  std::to_string(setting.scale) + " max " + std::to_string(setting.max));
     grTexDetailControl(GR_TMU0, setting.bias, static_cast<FxU8>(setting.scale), setting.max);
-    draw(floor);
+    draw_plane(floor);
     const std::vector<FxU16> frame = read_buffer();
     const int max_field = voodoo_ref::detail_max_field(setting.max);
     int compared = 0, wrong = 0, nonzero = 0;
@@ -139,7 +119,7 @@ TEST_F(TmuBreadthTest, DetailFactorAtAFixedLodMatchesTheRegisterArithmetic) {
       for (int scale : {0, 3, 7}) {
         for (float max : {0.0f, 0.3f, 1.0f}) {
           grTexDetailControl(GR_TMU0, bias, static_cast<FxU8>(scale), max);
-          draw(flat);
+          draw_plane(flat);
           const int f = voodoo_ref::detail_factor(lod, bias, scale, voodoo_ref::detail_max_field(max));
           const auto &c = current().tmu.combine;
           const voodoo_ref::TexCombineConfig config{c.rgb_function, c.rgb_factor, c.alpha_function,
@@ -172,7 +152,7 @@ TEST_F(TmuBreadthTest, DetailFactorWithoutMipmappingUsesLodmin) {
   grTexCombine(GR_TMU0, blend_local.rgb_function, blend_local.rgb_factor,
                blend_local.alpha_function, blend_local.alpha_factor, FXFALSE, FXFALSE);
   grTexDetailControl(GR_TMU0, 5, 4, 1.0f);
-  draw(Plane{4.0, 4.0, 1.0, 0.25});
+  draw_plane(Plane{4.0, 4.0, 1.0, 0.25});
   EXPECT_EQ(voodoo_ref::detail_factor(2 * 256, 5, 4, 255), 48);
   const FxU16 want = voodoo_ref::pack_rgb565(voodoo_ref::combine_tmu(
       blend_local, rgb565(0xFFFF), voodoo_ref::kNoUpstreamTmu, 48, 0));

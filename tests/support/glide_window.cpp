@@ -51,3 +51,17 @@ void GlideWindowTest::draw_rect(float x0, float y0, float x1, float y1, const Gr
 void GlideWindowTest::expect_no_error() {
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }
+
+void GlideWindowTest::draw_plane(const TexturePlane &plane) {
+  GrVertex v[4];
+  const float xs[4] = {0, kWidth, kWidth, 0}, ys[4] = {0, 0, kHeight, kHeight};
+  for (int k = 0; k < 4; ++k) {
+    v[k] = vertex();
+    v[k].x = xs[k], v[k].y = ys[k];
+    v[k].oow = static_cast<float>(plane.oow(ys[k]));
+    v[k].tmuvtx[0].sow = static_cast<float>(plane.s_dx * xs[k]);
+    v[k].tmuvtx[0].tow = static_cast<float>(plane.t_dy * ys[k]);
+  }
+  grDrawTriangle(&v[0], &v[1], &v[2]);
+  grDrawTriangle(&v[0], &v[2], &v[3]);
+}

@@ -9,6 +9,15 @@
 #include <cstdint>
 #include <vector>
 
+// sow, tow and oow affine in screen x, y, as a plane in perspective is: both triangles of the
+// full-window quad share one gradient (256-texel units per pixel of sow and tow), and 1/w runs
+// linearly from the top row to the bottom of the 64-pixel window.
+struct TexturePlane {
+  double s_dx, t_dy;
+  double oow_top, oow_bottom;
+  double oow(double y) const { return oow_top + (oow_bottom - oow_top) * y / 64.0; }
+};
+
 class GlideWindowTest : public ::testing::Test {
  protected:
   static constexpr int kWidth = 64;
@@ -25,6 +34,8 @@ class GlideWindowTest : public ::testing::Test {
   // and texture fields.
   static void draw_rect(float x0, float y0, float x1, float y1, const GrVertex &style);
   static GrVertex vertex();  // all fields zero but oow = 1
+  // The whole window textured by `plane` (TMU 0's s/w, t/w and 1/w).
+  static void draw_plane(const TexturePlane &plane);
 
   // Expects no error reported since the last glideShimClearError.
   static void expect_no_error();
