@@ -3,8 +3,8 @@
 // through the direct (render-to-texture) path; the five step times; frames per second without
 // PNG writing; peak memory. Medians of repeats after a warm-up (llvmpipe compiles each new state
 // on its first draw).
-#include "fight_scene.h"
-#include "projected_shadow.h"
+#include "scene/fight_scene.h"
+#include "techniques/projected_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -11,7 +11,7 @@
 //   hard_case_sweeps [tilt|contact|translation|scale|shadow-size|screen-size]...  (default: all)
 #include "hard_case_scenes.h"
 
-#include "speed_error.h"
+#include "measure/speed_error.h"
 
 #include <cstdio>
 #include <string>

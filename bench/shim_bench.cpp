@@ -6,7 +6,7 @@
 #include <glide_shim.h>
 
 #include "context.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,7 @@
 // with a message naming the file and leaves the mesh alone, or it returns a mesh whose every
 // index is in range and whose normals are finite unit vectors.
 #include "fuzz_files.h"
-#include "mesh.h"
+#include "scene/mesh.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // a message naming the file and leaves the scene alone, or the scene keeps the documented limits
 // (docs/scene_format.md): screen sides, lights, triangles, and indices in range.
 #include "fuzz_files.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <cstdio>
 #include <cstdlib>

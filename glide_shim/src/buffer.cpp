@@ -3,7 +3,7 @@
 #include "context.h"
 #include "depth.h"
 #include "frame_export.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 #include "texture_layout.h"
 #include "window.h"

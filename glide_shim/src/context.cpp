@@ -1,7 +1,7 @@
 // The GlideContext: construction, the defaults grSstWinOpen loads, and the current pointer.
 #include "context.h"
 
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 namespace glide_shim {
 

@@ -3,7 +3,7 @@
 #include "draw.h"
 
 #include "depth.h"
-#include "shader_source.h"
+#include "gl/shader_source.h"
 
 #include <cmath>
 #include <string>

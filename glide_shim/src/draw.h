@@ -3,7 +3,7 @@
 #pragma once
 
 #include "context.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 // (lfb_pipeline.cpp) run through the pixel pipeline.
 #include "context.h"
 #include "depth.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 #include "lfb_pipeline.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include "lfb_pipeline.h"
 
 #include "depth.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 namespace glide_shim {
 namespace {

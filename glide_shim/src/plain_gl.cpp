@@ -1,7 +1,7 @@
 // Plain OpenGL between Glide calls (glide_shim.h): the shim flushes its queue, saves GL state and
 // lends its context and frame buffer to the caller, then takes them back.
 #include "context.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 using glide_shim::current;
 

@@ -2,7 +2,7 @@
 // one TMU), opening and closing the window, origin and hints, the status and retrace queries,
 // and the splash and logo calls (no-ops).
 #include "context.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 #include "window.h"
 
 #include <cstring>

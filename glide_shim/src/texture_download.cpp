@@ -3,7 +3,7 @@
 // the copy; how the bytes are read is decided later by grTexSource, which is what lets the
 // article download 565 frame-buffer words as an ARGB_4444 texture.
 #include "context.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 #include "texture_layout.h"
 
 #include <cstring>

@@ -4,7 +4,7 @@
 
 #include "context.h"
 #include "frame_export.h"
-#include "gl_renderer.h"
+#include "gl/gl_renderer.h"
 
 #include <cstdint>
 #include <cstdio>

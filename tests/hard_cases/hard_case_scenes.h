@@ -3,7 +3,7 @@
 // the cases vary (a receiver's tilt, the whole scene's place and size).
 #pragma once
 
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,7 +3,7 @@
 // reference_images/figures/<name>.png. Tolerance as for the other frames: llvmpipe's output
 // depends on the CPU's vector ISA, so a pixel may differ by 4/255 and 1% of pixels may differ
 // more. Also the `figures` command as a user runs it.
-#include "figures.h"
+#include "figures/figures.h"
 #include "image_compare.h"
 
 #include <glide.h>

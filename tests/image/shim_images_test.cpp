@@ -40,7 +40,7 @@ TEST(SampleProgram, ArticlePortRendersItsShadow) {
   EXPECT_TRUE(matches_reference("article_port", png, kAcrossCpus));
 }
 
-// demo/crate_3df.c, an SDK-style program, run as a user would from demo/data (where its .3df
+// demo/crate_3df.c, an SDK-style program, run as a user would from examples/data (where its .3df
 // textures are) with the frame dump on into its own directory `run` (tests may run at once).
 // Returns that directory; the program's output is in log.txt there, its exit status in `status`.
 std::filesystem::path run_crate_3df(const std::string &run, const std::string &arguments,
@@ -48,7 +48,7 @@ std::filesystem::path run_crate_3df(const std::string &run, const std::string &a
   const std::filesystem::path dir = std::filesystem::path(output_path("crate_3df_" + run));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const std::string command = "cd " + std::string(DEMO_DATA_DIR) + " && GLIDESHIM_DUMP_DIR=" +
+  const std::string command = "cd " + std::string(EXAMPLES_DATA_DIR) + " && GLIDESHIM_DUMP_DIR=" +
                               dir.string() + " " + CRATE_3DF_PATH + " " + arguments + " > " +
                               (dir / "log.txt").string() + " 2>&1";
   status = std::system(command.c_str());

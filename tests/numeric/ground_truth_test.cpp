@@ -2,10 +2,10 @@
 // box under a light straight above, a receiver nearer the light than the caster, points behind
 // the light, an object shadowing itself, determinism, refusing absurd sizes, and the time it
 // takes on the demo's scene. No Glide window: everything here is CPU ray casting.
-#include "fight_scene.h"
-#include "ground_truth.h"
-#include "lighting.h"
-#include "projection.h"
+#include "scene/fight_scene.h"
+#include "measure/ground_truth.h"
+#include "scene/lighting.h"
+#include "techniques/projection.h"
 #include "technique_fixture.h"
 
 #include <gtest/gtest.h>

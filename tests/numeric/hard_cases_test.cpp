@@ -4,13 +4,13 @@
 // Thresholds are fractions of the receiver pixels; each says what the technique can do and why.
 #include "hard_case_scenes.h"
 
-#include "ground_truth.h"
-#include "metrics.h"
-#include "planar_shadow.h"
-#include "projected_shadow.h"
-#include "scene_pass.h"
-#include "stencil_volume_shadow.h"
-#include "technique.h"
+#include "measure/ground_truth.h"
+#include "measure/metrics.h"
+#include "techniques/planar_shadow.h"
+#include "techniques/projected_shadow.h"
+#include "techniques/scene_pass.h"
+#include "techniques/stencil_volume_shadow.h"
+#include "techniques/technique.h"
 
 #include <glide.h>
 #include <glide_shim.h>

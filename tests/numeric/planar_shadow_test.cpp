@@ -2,10 +2,10 @@
 // known: the footprint of a box against its geometric shadow, no shadow on the caster or on a
 // receiver nearer the light, shadows on other objects, agreement with the projected texture, each
 // pixel darkened once however many polygons cover it, and the pair limit's warning.
-#include "fight_scene.h"
-#include "planar_shadow.h"
-#include "scene_pass.h"
-#include "technique.h"
+#include "scene/fight_scene.h"
+#include "techniques/planar_shadow.h"
+#include "techniques/scene_pass.h"
+#include "techniques/technique.h"
 
 #include <glide.h>
 #include <glide_shim.h>

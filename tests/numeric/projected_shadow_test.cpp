@@ -2,8 +2,8 @@
 // where it must not (the caster itself, behind the light, between the light and the caster),
 // the texture's clean border, and the LFB and direct paths giving the same texture.
 #include "context.h"
-#include "fight_scene.h"
-#include "projected_shadow.h"
+#include "scene/fight_scene.h"
+#include "techniques/projected_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>

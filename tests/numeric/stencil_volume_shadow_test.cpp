@@ -1,10 +1,10 @@
 // The stencil shadow volume technique on scenes whose answer is known: silhouettes of simple
 // shapes, a box's footprint on the floor (against the projected texture's), the camera inside a
 // shadow volume (z-fail right, z-pass wrong, the automatic choice z-fail), and an open caster.
-#include "fight_scene.h"
-#include "scene_pass.h"
-#include "stencil_volume_shadow.h"
-#include "technique.h"
+#include "scene/fight_scene.h"
+#include "techniques/scene_pass.h"
+#include "techniques/stencil_volume_shadow.h"
+#include "techniques/technique.h"
 
 #include <glide.h>
 #include <glide_shim.h>

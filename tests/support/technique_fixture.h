@@ -3,8 +3,8 @@
 // a box over a floor under a light straight above.
 #pragma once
 
-#include "scene.h"
-#include "technique.h"
+#include "scene/scene.h"
+#include "techniques/technique.h"
 
 #include <glide.h>
 #include <glide_shim.h>

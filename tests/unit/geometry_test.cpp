@@ -17,9 +17,9 @@
 #include <utility>
 #include <vector>
 
-#include "fighter.h"
-#include "mesh.h"
-#include "ring.h"
+#include "scene/fighter.h"
+#include "scene/mesh.h"
+#include "scene/ring.h"
 
 #ifndef GLIDESHADOWS_TEST_DATA_DIR
 #define GLIDESHADOWS_TEST_DATA_DIR "data"

@@ -4,8 +4,8 @@
 // Limits already covered elsewhere: divisions, triangle budget, screen and shadow sizes in scene
 // files (scene_file_test.cpp, tests/data/bad_scenes); texture LODs, TMU memory, LFB regions and
 // coordinates in the shim (bad_input_test.cpp).
-#include "mesh.h"
-#include "scene.h"
+#include "scene/mesh.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 #include <glide.h>

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "metrics.h"
+#include "measure/metrics.h"
 
 namespace {
 

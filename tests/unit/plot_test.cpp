@@ -1,7 +1,7 @@
 // The speed-against-error plot (plot.h): pareto_front on hand-made sets, and write_plot's PNG
 // read back with OpenImageIO (size, something drawn, a front point where the axes put it,
 // identical bytes on a second write) plus its errors for no points and an unwritable path.
-#include "plot.h"
+#include "measure/plot.h"
 
 #include <OpenImageIO/imagebuf.h>
 

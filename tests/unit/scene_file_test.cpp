@@ -2,7 +2,7 @@
 // values they were written with; transforms compose as documented; every file in
 // tests/data/bad_scenes is refused with a message naming the file and the broken field's JSON
 // path, and a refused load leaves the caller's Scene as it was.
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

@@ -1,5 +1,5 @@
 // The bench's comparison with the article's step times, on rows whose shares are known.
-#include "speed_error.h"
+#include "measure/speed_error.h"
 
 #include <gtest/gtest.h>
 

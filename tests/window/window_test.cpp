@@ -119,13 +119,13 @@ TEST(SdkProgram, WindowShowsTheHeadlessFrame) {
   const std::string dump = output_file("crate_3df_headless");
   std::filesystem::remove_all(dump);
   std::filesystem::create_directories(dump);
-  const std::string headless = "cd " + std::string(DEMO_DATA_DIR) +
+  const std::string headless = "cd " + std::string(EXAMPLES_DATA_DIR) +
                                " && GLIDESHIM_BACKEND=osmesa GLIDESHIM_DUMP_DIR=" + dump + " " +
                                CRATE_3DF_PATH + " -n 12 > /dev/null";
   ASSERT_EQ(window_test::run_command(headless), 0) << headless;
 
   ChildProcess program({"/bin/sh", "-c",
-                        "cd " + std::string(DEMO_DATA_DIR) + " && exec " + CRATE_3DF_PATH +
+                        "cd " + std::string(EXAMPLES_DATA_DIR) + " && exec " + CRATE_3DF_PATH +
                             " -n 12 2>&1"},
                        {"GLIDESHIM_BACKEND=sdl", "GLIDESHIM_HOLD=1"});
   ASSERT_TRUE(program.wait_for_line("holding the last frame", 60.0))

@@ -1,0 +1,34 @@
+// What several subcommands share: the technique options (--technique, --shadow-size, ...), the
+// Glide window every rendering command opens, and parsing of a WxH screen size.
+#pragma once
+
+#include "techniques/technique.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace gs::cli {
+
+// The technique's options as the command line spells them.
+struct TechniqueChoice {
+  std::string name = "projected";
+  bool direct_path = false, point = false, affine = false, auto_size = false;
+  std::string alpha = "constant";
+  float bias_slope = 1.0f, bias_units = 4.0f;  // depth-map polygon offset
+  bool nearest = false;                       // depth-map filtering
+  std::string volume = "auto";                // stencil-volume mode
+};
+
+void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size);
+TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_size);
+
+// grGlideInit and a width x height window with the article's gamma (Listing 4); false with a
+// message on stderr when the shim refuses.
+bool open_window(int width, int height);
+
+// "WxH", two decimal integers, each side 64..2048; a number too long for an int fails like any
+// other bad text.
+bool parse_size(const std::string &text, int &width, int &height);
+
+}  // namespace gs::cli

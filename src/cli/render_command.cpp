@@ -1,0 +1,67 @@
+// `glideshadows render SCENE.json`: a scene file through one technique to a PNG, and with --mask
+// the technique's shadow mask.
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "scene/scene.h"
+
+#include <glide.h>
+#include <glide_shim.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace gs::cli {
+namespace {
+
+struct RenderOptions {
+  std::string scene_path, out = "render.png", mask;
+  int shadow_size = 0;  // 0: each light's own shadow_size
+  TechniqueChoice choice;
+};
+
+int run_render(const RenderOptions &o) {
+  Scene scene;
+  std::string error;
+  if (!load_scene(o.scene_path, scene, error)) {
+    std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
+    return 1;
+  }
+  std::unique_ptr<ShadowTechnique> technique =
+      make_technique(o.choice.name, technique_options(o.choice, o.shadow_size), error);
+  if (!technique) {
+    std::fprintf(stderr, "glideshadows render: %s\n", error.c_str());
+    return 2;
+  }
+  if (!open_window(scene.width, scene.height)) return 1;
+  const FrameReport frame = technique->render(scene, false);
+  for (const std::string &w : frame.warnings) std::fprintf(stderr, "glideshadows render: warning: %s\n", w.c_str());
+  bool ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, o.out.c_str());
+  if (ok) std::printf("image: %s\n", o.out.c_str());
+  if (ok && !o.mask.empty()) {
+    const float gamma = 1.0f;  // the mask is data, not a picture: no gamma
+    grGammaCorrectionValue(gamma);
+    technique->render_mask(scene);
+    ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, o.mask.c_str());
+    if (ok) std::printf("mask: %s (white: pixels the technique darkened)\n", o.mask.c_str());
+  }
+  if (!ok) std::fprintf(stderr, "glideshadows render: %s\n", glideShimGetLastErrorMessage());
+  grGlideShutdown();
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App &app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App *render = app.add_subcommand("render", "render a scene file (JSON, docs/scene_format.md)");
+  render->add_option("scene", o->scene_path, "scene file")->required()->check(CLI::ExistingFile);
+  render->add_option("--out", o->out, "output PNG")->capture_default_str();
+  render->add_option("--mask", o->mask, "also write the shadow mask PNG (white: darkened by the technique)");
+  add_technique_options(*render, o->choice, o->shadow_size);
+  render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
+  render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256, 512}));
+  return {render, [o] { return run_render(*o); }};
+}
+
+}  // namespace gs::cli

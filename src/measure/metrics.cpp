@@ -1,0 +1,247 @@
+// Mask and image error metrics (metrics.h): misclassified receiver pixels split into the ±1-pixel
+// band around the true shadow boundary and the interior, the farthest wrong pixel from that
+// boundary (exact Euclidean distance transform, Felzenszwalb & Huttenlocher 2012), and whole-image
+// mean / max / PSNR through OpenImageIO with an optional heat map of the difference.
+#include "measure/metrics.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gs {
+
+namespace {
+
+// PSNR reported for identical images, where OIIO gives +inf. Finite so that CSV/JSON output and
+// plots stay valid; far above what any two images differing by one 16-bit level in one channel
+// can reach (96.3 dB + 10·log10(channel values), under 190 dB for a billion values), so it
+// cannot be mistaken for a measurement.
+constexpr double kIdenticalPsnrDb = 999.0;
+
+// One 8-bit level. OIIO counts a failure when |A−B| > threshold, and a one-level difference read
+// back as float can land a rounding error above 1/255; the margin keeps one level from counting.
+constexpr float kFailThreshold = 1.0f / 255.0f + 1e-6f;
+
+constexpr double kFar = 1e20;  // squared distance standing for "no boundary pixel"
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Exact squared Euclidean distance transform of one line (Felzenszwalb & Huttenlocher):
+// d[q] = min_p (q−p)² + f[p], the lower envelope of the parabolas rooted at every p.
+std::vector<double> distance_1d(const std::vector<double> &f) {
+  const int n = static_cast<int>(f.size());
+  std::vector<int> v(n);         // roots of the parabolas on the envelope
+  std::vector<double> z(n + 1);  // where each envelope parabola takes over
+  int k = 0;
+  z[0] = -kInf;
+  z[1] = kInf;
+  for (int q = 1; q < n; ++q) {
+    double s = 0.0;
+    for (;;) {
+      const int p = v[k];
+      s = ((f[q] + double(q) * q) - (f[p] + double(p) * p)) / (2.0 * (q - p));
+      if (s > z[k]) break;
+      --k;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = kInf;
+  }
+  std::vector<double> d(n);
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < q) ++k;
+    const double dq = q - v[k];
+    d[q] = dq * dq + f[v[k]];
+  }
+  return d;
+}
+
+// Squared distance from every pixel to the nearest pixel with seed != 0: columns, then rows.
+std::vector<double> squared_distance(const std::vector<std::uint8_t> &seed, int width, int height) {
+  std::vector<double> grid(seed.size());
+  for (std::size_t i = 0; i < seed.size(); ++i) grid[i] = seed[i] ? 0.0 : kFar;
+  std::vector<double> column(height);
+  for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < height; ++y) column[y] = grid[std::size_t(y) * width + x];
+    const std::vector<double> d = distance_1d(column);
+    for (int y = 0; y < height; ++y) grid[std::size_t(y) * width + x] = d[y];
+  }
+  for (int y = 0; y < height; ++y) {
+    const auto row = grid.begin() + std::ptrdiff_t(y) * width;
+    const std::vector<double> d = distance_1d(std::vector<double>(row, row + width));
+    std::copy(d.begin(), d.end(), row);
+  }
+  return grid;
+}
+
+// Black → red → yellow → white, t in 0..1, one third of the range per step.
+void heat_colour(float t, unsigned char rgb[3]) {
+  const float s = 3.0f * std::clamp(t, 0.0f, 1.0f);
+  const float channel[3] = {s, s - 1.0f, s - 2.0f};
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(channel[c], 0.0f, 1.0f)));
+}
+
+bool read_image(const std::string &path, OIIO::ImageBuf &buf, std::string &error) {
+  buf.reset(path);
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    error = "cannot read image '" + path + "': " + buf.geterror();
+    return false;
+  }
+  return true;
+}
+
+bool write_heat_map(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const std::string &path,
+                    std::string &error) {
+  const OIIO::ImageSpec &spec = a.spec();
+  const int w = spec.width, h = spec.height, nc = spec.nchannels;
+  std::vector<float> pa(std::size_t(w) * h * nc), pb(pa.size());
+  a.get_pixels(a.roi(), OIIO::TypeDesc::FLOAT, pa.data());
+  b.get_pixels(b.roi(), OIIO::TypeDesc::FLOAT, pb.data());
+  std::vector<float> diff(std::size_t(w) * h, 0.0f);
+  for (std::size_t i = 0; i < diff.size(); ++i)
+    for (int c = 0; c < nc; ++c)
+      diff[i] = std::max(diff[i], std::fabs(pa[i * nc + c] - pb[i * nc + c]));
+  const float largest = *std::max_element(diff.begin(), diff.end());
+  std::vector<unsigned char> rgb(diff.size() * 3);
+  for (std::size_t i = 0; i < diff.size(); ++i)
+    heat_colour(largest > 0.0f ? diff[i] / largest : 0.0f, &rgb[i * 3]);
+  OIIO::ImageBuf out(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8), rgb.data());
+  if (!out.write(path, OIIO::TypeDesc::UINT8, "png")) {
+    error = "cannot write heat map '" + path + "': " + out.geterror();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
+                         const std::vector<std::uint8_t> &truth,
+                         const std::vector<std::uint8_t> &receivers, int width, int height) {
+  MaskErrors errors;
+  const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
+  // The API has no error channel: inputs shorter than width·height compare nothing.
+  if (count == 0 || technique.size() < count || truth.size() < count || receivers.size() < count)
+    return errors;
+  auto at = [width](int x, int y) { return std::size_t(y) * width + x; };
+
+  // Boundary: a receiver whose 4-neighbour is also a receiver with the other truth value. The
+  // neighbour must be a receiver because the edge of a receiver against the background (or an
+  // excluded surface) is a silhouette, not a shadow edge. Both sides of an edge are boundary.
+  std::vector<std::uint8_t> boundary(count, 0);
+  bool any_boundary = false;
+  const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = at(x, y);
+      if (!receivers[i]) continue;
+      for (int k = 0; k < 4 && !boundary[i]; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        const std::size_t j = at(nx, ny);
+        if (receivers[j] && (truth[j] != 0) != (truth[i] != 0)) boundary[i] = 1;
+      }
+      any_boundary = any_boundary || boundary[i];
+    }
+  const std::vector<double> d2 = squared_distance(boundary, width, height);
+
+  // With no boundary a wrong pixel is near nothing: it is interior and its distance is the image
+  // diagonal, an upper bound on every real distance that marks the case without being infinite.
+  const double diagonal = std::hypot(double(width), double(height));
+  long fs_band = 0, fs_interior = 0, fl_band = 0, fl_interior = 0;
+  double max_d2 = 0.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!receivers[i]) continue;
+    ++errors.receiver_pixels;
+    const bool t = technique[i] != 0, g = truth[i] != 0;
+    if (t == g) continue;
+    // Integer offsets with dx² + dy² <= 2 are exactly those with Chebyshev distance <= 1.
+    const bool band = any_boundary && d2[i] <= 2.0;
+    if (t)
+      ++(band ? fs_band : fs_interior);
+    else
+      ++(band ? fl_band : fl_interior);
+    max_d2 = std::max(max_d2, any_boundary ? d2[i] : diagonal * diagonal);
+  }
+  errors.false_shadow = fs_band + fs_interior;
+  errors.false_light = fl_band + fl_interior;
+  errors.max_distance_px = std::sqrt(max_d2);
+  if (errors.receiver_pixels > 0) {
+    const double n = double(errors.receiver_pixels);
+    errors.false_shadow_band = static_cast<double>(fs_band) / n;
+    errors.false_shadow_interior = static_cast<double>(fs_interior) / n;
+    errors.false_light_band = static_cast<double>(fl_band) / n;
+    errors.false_light_interior = static_cast<double>(fl_interior) / n;
+    errors.misclassified = static_cast<double>(errors.false_shadow + errors.false_light) / n;
+  }
+  return errors;
+}
+
+namespace {
+
+// OpenImageIO's comparison, its PSNR made finite for identical images.
+ImageErrors compare_buffers(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b) {
+  const OIIO::ImageBufAlgo::CompareResults r =
+      OIIO::ImageBufAlgo::compare(a, b, kFailThreshold, kFailThreshold);
+  ImageErrors errors;
+  errors.mean = r.meanerror;
+  errors.max = r.maxerror;
+  errors.psnr = std::isfinite(r.PSNR) ? r.PSNR : kIdenticalPsnrDb;
+  errors.pixels_over_threshold = static_cast<long>(r.nfail);
+  return errors;
+}
+
+}  // namespace
+
+bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
+                    ImageErrors &errors, std::string &error) {
+  OIIO::ImageBuf image_a, image_b;
+  if (!read_image(a, image_a, error) || !read_image(b, image_b, error)) return false;
+  const OIIO::ImageSpec &sa = image_a.spec(), &sb = image_b.spec();
+  if (sa.width != sb.width || sa.height != sb.height || sa.nchannels != sb.nchannels) {
+    error = "images differ in size: '" + a + "' is " + std::to_string(sa.width) + "x" +
+            std::to_string(sa.height) + "x" + std::to_string(sa.nchannels) + ", '" + b + "' is " +
+            std::to_string(sb.width) + "x" + std::to_string(sb.height) + "x" +
+            std::to_string(sb.nchannels);
+    return false;
+  }
+  // r.error is not checked: OIIO 2.4 sets it whenever a pixel exceeds the threshold, and both
+  // images were read and matched in size above, which is all compare needs.
+  errors = compare_buffers(image_a, image_b);
+  return heat_map.empty() || write_heat_map(image_a, image_b, heat_map, error);
+}
+
+ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
+                        int width, int height) {
+  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  OIIO::ImageBuf image_a(spec), image_b(spec);
+  image_a.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, a.data());
+  image_b.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, b.data());
+  return compare_buffers(image_a, image_b);
+}
+
+bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
+               std::string &error) {
+  OIIO::ImageBuf buf;
+  if (!read_image(path, buf, error)) return false;
+  const OIIO::ImageSpec &spec = buf.spec();
+  // Alpha is skipped when there are colour channels: an opaque RGBA mask would otherwise be all 1.
+  const int alpha = spec.nchannels > 1 ? spec.alpha_channel : -1;
+  const int nc = spec.nchannels;
+  std::vector<float> pixels(std::size_t(spec.width) * spec.height * nc);
+  buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, pixels.data());
+  mask.assign(std::size_t(spec.width) * spec.height, 0);
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    for (int c = 0; c < nc; ++c)
+      if (c != alpha && pixels[i * nc + c] > 0.5f) mask[i] = 1;
+  width = spec.width;
+  height = spec.height;
+  return true;
+}
+
+}  // namespace gs

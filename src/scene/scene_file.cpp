@@ -1,0 +1,570 @@
+// The JSON scene-file reader behind load_scene (format: docs/scene_format.md). Every field is
+// checked against its documented type and range; the first problem ends the load with a message
+// naming the file and the field's JSON path, and nothing reaches the caller's Scene.
+#include "scene/fighter.h"
+#include "scene/input_file.h"
+#include "scene/ring.h"
+#include "scene/scene.h"
+#include "scene/slides.h"
+#include "scene/spotlight.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <memory>
+#include <new>
+#include <set>
+#include <utility>
+
+namespace gs {
+namespace {
+
+using json = nlohmann::json;
+
+// The scene's triangle budget, shadow meshes included: enough for a 1000 x 1000 plane, and far
+// below what would exhaust memory or stall a frame for minutes.
+constexpr std::size_t kMaxSceneTriangles = 2'000'000;
+constexpr unsigned kMaxDivisions = 1000;  // plane, heightfield: 2 * 1000^2 triangles
+constexpr unsigned kMaxSlices = 1000;     // sphere, cylinder
+constexpr unsigned kMaxStacks = 1000;     // sphere: 2 * 1000 * 1000 triangles at most
+constexpr unsigned kMaxScreenSide = 2048;
+constexpr std::size_t kMaxLights = 16;  // each light is at least one more pass over the scene
+constexpr std::size_t kMaxSceneFileBytes = 16u << 20;  // far above any hand-written scene
+constexpr int kProjectedImageSide = 128;  // slides and beams from files: 128 x 128 texels
+
+// A problem in the file: the JSON path of the field ("objects[2].mesh.shape"; empty for the
+// file as a whole) and what is wrong with it. Thrown inside this file only; load_scene catches it.
+struct SceneError {
+  std::string where;
+  std::string problem;
+};
+
+// One value of the parsed document together with its JSON path, for messages.
+struct Field {
+  const json &value;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string &problem) const { throw SceneError{path, problem}; }
+
+  std::string child_path(const std::string &key) const {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  // Requires an object whose keys are all in `allowed`: a misspelt optional field must not be
+  // silently ignored.
+  void require_object_with_keys(std::initializer_list<const char *> allowed) const {
+    if (!value.is_object()) fail("must be an object");
+    for (const auto &item : value.items()) {
+      bool known = false;
+      for (const char *key : allowed) known = known || item.key() == key;
+      if (known) continue;
+      std::string expected;
+      std::size_t index = 0;
+      for (const char *key : allowed) {
+        if (index > 0) expected += index + 1 == allowed.size() ? " or " : ", ";
+        expected += key;
+        ++index;
+      }
+      throw SceneError{child_path(item.key()), "unknown field (expected " + expected + ")"};
+    }
+  }
+
+  bool has(const char *key) const { return value.contains(key); }
+
+  Field operator[](const char *key) const {
+    const auto found = value.find(key);
+    if (found == value.end()) throw SceneError{child_path(key), "required field is missing"};
+    return {*found, child_path(key)};
+  }
+
+  Field item(std::size_t index) const {
+    return {value[index], path + "[" + std::to_string(index) + "]"};
+  }
+};
+
+// ---- values ----------------------------------------------------------------------------------
+
+bool any_value(float) { return true; }
+bool positive(float v) { return v > 0.0f; }
+bool unit_interval(float v) { return v >= 0.0f && v <= 1.0f; }
+
+// A JSON number within float range (1e39 is a valid double but not a float) that passes
+// `accept`; `expected` completes "must be ...".
+float number(const Field &f, const char *expected, bool (*accept)(float)) {
+  if (f.value.is_number()) {
+    const double v = f.value.get<double>();
+    if (std::abs(v) <= std::numeric_limits<float>::max() && accept(static_cast<float>(v)))
+      return static_cast<float>(v);
+  }
+  f.fail(std::string("must be ") + expected);
+}
+
+// Every integer field is positive, so only non-negative JSON integers (nlohmann stores those as
+// unsigned) can be in range; 640.0 is a float in JSON and is refused like 640.5.
+int integer(const Field &f, unsigned lo, unsigned hi) {
+  if (f.value.is_number_unsigned()) {
+    const std::uint64_t v = f.value.get<std::uint64_t>();
+    if (v >= lo && v <= hi) return static_cast<int>(v);
+  }
+  f.fail("must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
+bool boolean(const Field &f) {
+  if (!f.value.is_boolean()) f.fail("must be true or false");
+  return f.value.get<bool>();
+}
+
+std::string text(const Field &f) {
+  if (!f.value.is_string()) f.fail("must be a string");
+  return f.value.get<std::string>();
+}
+
+glm::vec3 vec3(const Field &f, const char *element, bool (*accept)(float)) {
+  if (!f.value.is_array() || f.value.size() != 3) f.fail("must be an array of 3 numbers");
+  glm::vec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = number(f.item(static_cast<std::size_t>(i)), element, accept);
+  return v;
+}
+
+glm::vec3 position(const Field &f) { return vec3(f, "a finite number", any_value); }
+glm::vec3 color(const Field &f) { return vec3(f, "a number in [0, 1]", unit_interval); }
+
+// ---- parsing ---------------------------------------------------------------------------------
+
+// nlohmann keeps the last of two equal keys; a field given twice is a mistake like a misspelt
+// one, so the parse callback follows the JSON path and remembers the first repeated key.
+class DuplicateKeyFinder {
+ public:
+  std::string first_duplicate;  // its JSON path; empty if every object's keys are distinct
+
+  bool operator()(int, json::parse_event_t event, const json &parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        frames_.push_back({false, 0, {}, {}});
+        break;
+      case json::parse_event_t::array_start:
+        frames_.push_back({true, 0, {}, {}});
+        break;
+      case json::parse_event_t::key:
+        frames_.back().key = parsed.get<std::string>();
+        if (!frames_.back().keys.insert(frames_.back().key).second && first_duplicate.empty())
+          first_duplicate = path();
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::value:
+        element_done();
+        break;
+    }
+    return true;  // keep every value
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;  // array: the element being read
+    std::string key;    // object: the member being read
+    std::set<std::string> keys;
+  };
+  std::vector<Frame> frames_;
+
+  void element_done() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+  std::string path() const {
+    std::string result;
+    for (const Frame &frame : frames_) {
+      if (frame.array)
+        result += "[" + std::to_string(frame.index) + "]";
+      else
+        result += (result.empty() ? "" : ".") + frame.key;
+    }
+    return result;
+  }
+};
+
+json parse_file(const std::string &path) {
+  std::string contents, error;
+  if (!read_input_file(path, kMaxSceneFileBytes, contents, error)) throw SceneError{{}, error};
+  DuplicateKeyFinder duplicates;
+  json document;
+  try {
+    document = json::parse(contents, std::ref(duplicates));
+  } catch (const json::exception &e) {
+    // what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+    const std::string what = e.what();
+    const std::size_t tag_end = what.find("] ");
+    throw SceneError{
+        {}, "malformed JSON: " + (tag_end == std::string::npos ? what : what.substr(tag_end + 2))};
+  }
+  if (!duplicates.first_duplicate.empty())
+    throw SceneError{duplicates.first_duplicate, "field given twice"};
+  return document;
+}
+
+// ---- scene parts -----------------------------------------------------------------------------
+
+void read_screen(const Field &f, Scene &scene) {
+  f.require_object_with_keys({"width", "height"});
+  if (f.has("width")) scene.width = integer(f["width"], 1, kMaxScreenSide);
+  if (f.has("height")) scene.height = integer(f["height"], 1, kMaxScreenSide);
+}
+
+// A camera or spotlight must look somewhere: its target differs from its position.
+void check_aim(const Field &f, const glm::vec3 &from, const glm::vec3 &to, const char *what) {
+  if (glm::length(to - from) <= 0.0f) f["target"].fail(std::string("must differ from ") + what);
+}
+
+void read_camera(const Field &f, Camera &camera) {
+  f.require_object_with_keys({"position", "target", "up", "fov_degrees", "near", "far"});
+  camera.position = position(f["position"]);
+  camera.target = position(f["target"]);
+  check_aim(f, camera.position, camera.target, "camera.position");
+  if (f.has("up")) camera.up = position(f["up"]);
+  // World space; a zero up, or one along the view, leaves the camera's roll undefined.
+  const glm::vec3 view = glm::normalize(camera.target - camera.position);
+  if (!(glm::length(glm::cross(view, camera.up)) > 1e-6f * glm::length(camera.up))) {
+    if (f.has("up")) f["up"].fail("must not be zero or parallel to the view direction");
+    f["target"].fail("the view is vertical, parallel to the default up [0, 1, 0]: give \"up\"");
+  }
+  if (f.has("fov_degrees"))
+    camera.fov_degrees = number(f["fov_degrees"], "a number in (0, 180)",
+                                [](float v) { return v > 0.0f && v < 180.0f; });
+  if (f.has("near")) camera.near_plane = number(f["near"], "a number > 0", positive);
+  if (f.has("far")) camera.far_plane = number(f["far"], "a number > 0", positive);
+  if (!(camera.far_plane > camera.near_plane)) {
+    if (f.has("far")) f["far"].fail("must be greater than near");
+    f["near"].fail("must be less than far");
+  }
+}
+
+// A slide or beam: a built-in pattern's name, or an image file relative to the scene file.
+std::shared_ptr<const ProjectedImage> read_light_image(const Field &f, bool (*is_pattern)(const std::string &),
+                                                       const char *patterns,
+                                                       const std::filesystem::path &scene_dir,
+                                                       std::string &name) {
+  name = text(f);
+  if (is_pattern(name)) return nullptr;
+  if (name.empty() || std::filesystem::path(name).extension().empty())
+    f.fail(std::string("must be one of the built-in patterns (") + patterns +
+           ") or an image file's path");
+  const std::string path = (scene_dir / name).lexically_normal().string();
+  auto image = std::make_shared<ProjectedImage>();
+  std::string error;
+  if (!load_projected_image(path, kProjectedImageSide, *image, error)) f.fail(error);
+  return image;
+}
+
+DistanceAttenuation read_attenuation(const Field &f) {
+  f.require_object_with_keys({"mode", "constant", "linear", "quadratic"});
+  DistanceAttenuation attenuation;
+  const std::string mode = text(f["mode"]);
+  if (mode == "vertex") {
+    attenuation.mode = AttenuationMode::PerVertex;
+  } else if (mode == "exact") {
+    attenuation.mode = AttenuationMode::PerPixel;
+  } else if (mode == "none") {
+    attenuation.mode = AttenuationMode::None;
+  } else {
+    f["mode"].fail("must be \"none\", \"vertex\" or \"exact\"");
+  }
+  auto non_negative = [](float v) { return v >= 0.0f; };
+  if (f.has("constant")) attenuation.constant = number(f["constant"], "a number >= 0", non_negative);
+  if (f.has("linear")) attenuation.linear = number(f["linear"], "a number >= 0", non_negative);
+  if (f.has("quadratic"))
+    attenuation.quadratic = number(f["quadratic"], "a number >= 0", non_negative);
+  if (!(attenuation.constant > 0.0f) && !(attenuation.linear > 0.0f) &&
+      !(attenuation.quadratic > 0.0f))
+    f.fail("constant, linear and quadratic are all 0: the light would be infinitely bright");
+  return attenuation;
+}
+
+SpotLight read_light(const Field &f, const std::filesystem::path &scene_dir) {
+  f.require_object_with_keys({"position", "target", "cone_degrees", "color", "shadow_strength",
+                              "shadow_size", "slide", "beam", "attenuation"});
+  SpotLight light;
+  light.position = position(f["position"]);
+  light.target = position(f["target"]);
+  check_aim(f, light.position, light.target, "the light's position");
+  if (f.has("cone_degrees"))
+    light.cone_degrees = number(f["cone_degrees"], "a number in (0, 179]",
+                                [](float v) { return v > 0.0f && v <= 179.0f; });
+  if (f.has("color")) light.color = color(f["color"]);
+  if (f.has("shadow_strength"))
+    light.shadow_strength = number(f["shadow_strength"], "a number in [0, 1]", unit_interval);
+  if (f.has("shadow_size")) {
+    const Field size = f["shadow_size"];
+    const bool is_integer = size.value.is_number_unsigned();
+    const std::uint64_t v = is_integer ? size.value.get<std::uint64_t>() : 0;
+    if (!is_integer || v < 32 || v > 512 || (v & (v - 1)) != 0)
+      size.fail("must be a power of two in 32..512");
+    light.shadow_size = static_cast<int>(v);
+  }
+  if (f.has("slide")) {
+    if (f.has("beam")) f["beam"].fail("a slide projector has no beam map: give slide or beam");
+    light.slide_image =
+        read_light_image(f["slide"], is_slide_pattern, "checker, rings, grid", scene_dir, light.slide);
+  }
+  if (f.has("beam"))
+    light.beam_image =
+        read_light_image(f["beam"], is_beam_pattern, "round, square, gobo, lens", scene_dir, light.beam);
+  if (f.has("attenuation")) light.attenuation = read_attenuation(f["attenuation"]);
+  if (light.attenuation.mode == AttenuationMode::PerPixel && !light.has_beam_map())
+    f["attenuation"]["mode"].fail("\"exact\" needs a beam map: give \"beam\" (or use \"vertex\")");
+  return light;
+}
+
+// An object's meshes, both in model space, before its colour and transform are applied.
+struct ObjectMeshes {
+  Mesh mesh;
+  Mesh shadow_mesh;  // empty unless the shape has a simplified caster (fighters)
+};
+
+// Counts the triangles of the scene so far against kMaxSceneTriangles.
+// Shapes with a size parameter are checked before they are built, so an absurd request
+// allocates nothing; every mesh is counted once built.
+class TriangleBudget {
+ public:
+  // Fails at `where`, the mesh field, if `triangles` more would take the scene over the limit.
+  void check(const Field &where, std::size_t triangles) const {
+    if (triangles > kMaxSceneTriangles - used_)
+      where.fail("the scene would have " + std::to_string(used_ + triangles) +
+                 " triangles, more than the limit of " + std::to_string(kMaxSceneTriangles));
+  }
+  void spend(const Field &where, std::size_t triangles) {
+    check(where, triangles);
+    used_ += triangles;
+  }
+
+ private:
+  std::size_t used_ = 0;
+};
+
+ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget &budget) {
+  ObjectMeshes out;
+  if (shape == "box") {
+    f.require_object_with_keys({"shape", "size"});
+    const glm::vec3 size =
+        f.has("size") ? vec3(f["size"], "a number > 0", positive) : glm::vec3(1.0f);
+    out.mesh = make_box(0.5f * size);
+  } else if (shape == "sphere") {
+    f.require_object_with_keys({"shape", "radius", "slices", "stacks"});
+    const float radius = f.has("radius") ? number(f["radius"], "a number > 0", positive) : 0.5f;
+    const int slices = f.has("slices") ? integer(f["slices"], 3, kMaxSlices) : 24;
+    const int stacks = f.has("stacks") ? integer(f["stacks"], 2, kMaxStacks) : 16;
+    budget.check(f, 2 * static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks));
+    out.mesh = make_sphere(radius, slices, stacks);
+  } else if (shape == "plane" || shape == "heightfield") {
+    const bool relief = shape == "heightfield";
+    if (relief)
+      f.require_object_with_keys({"shape", "size", "divisions", "amplitude", "wavelength"});
+    else
+      f.require_object_with_keys({"shape", "size", "divisions"});
+    const float size = f.has("size") ? number(f["size"], "a number > 0", positive) : 10.0f;
+    const int divisions =
+        f.has("divisions") ? integer(f["divisions"], 1, kMaxDivisions) : (relief ? 32 : 1);
+    budget.check(f, 2 * static_cast<std::size_t>(divisions) * static_cast<std::size_t>(divisions));
+    if (relief) {
+      const float amplitude =
+          f.has("amplitude") ? number(f["amplitude"], "a finite number", any_value) : 0.2f;
+      const float wavelength =
+          f.has("wavelength") ? number(f["wavelength"], "a number > 0", positive) : 4.0f;
+      const float k = glm::two_pi<float>() / wavelength;  // radians per metre, model space
+      out.mesh = make_heightfield(size, divisions, [amplitude, k](float x, float z) {
+        return amplitude * std::sin(k * x) * std::cos(k * z);
+      });
+    } else {
+      out.mesh = make_plane(size, divisions);
+    }
+  } else if (shape == "cylinder") {
+    f.require_object_with_keys({"shape", "radius", "length", "slices", "caps"});
+    const float radius = f.has("radius") ? number(f["radius"], "a number > 0", positive) : 0.5f;
+    const float length = f.has("length") ? number(f["length"], "a number > 0", positive) : 1.0f;
+    const int slices = f.has("slices") ? integer(f["slices"], 3, kMaxSlices) : 24;
+    const bool caps = f.has("caps") ? boolean(f["caps"]) : true;
+    budget.check(f, 4 * static_cast<std::size_t>(slices));
+    out.mesh = make_cylinder(radius, length, slices, caps);
+  } else if (shape == "fighter") {
+    f.require_object_with_keys({"shape", "pose", "phase", "body_color"});
+    Move move = Move::Guard;
+    if (f.has("pose")) {
+      const std::string name = text(f["pose"]);
+      if (!move_from_name(name, move))
+        f["pose"].fail("unknown pose '" + name + "' (expected guard, punch, kick, step or hit)");
+    }
+    const float phase =
+        f.has("phase") ? number(f["phase"], "a number in [0, 1]", unit_interval) : 0.0f;
+    const glm::vec3 body =  // default: the demo's red fighter
+        f.has("body_color") ? color(f["body_color"]) : glm::vec3(0.75f, 0.12f, 0.1f);
+    const FighterPose pose = pose_for(move, phase);
+    out.mesh = build_fighter(pose, body);
+    out.shadow_mesh = build_fighter_lod(pose);
+  } else if (shape == "ring") {
+    f.require_object_with_keys({"shape"});
+    out.mesh = build_ring();
+  } else {
+    f["shape"].fail("unknown shape '" + shape +
+                    "' (expected box, sphere, plane, heightfield, cylinder, fighter, ring or an "
+                    "obj path)");
+  }
+  return out;
+}
+
+ObjectMeshes read_mesh(const Field &f, const std::filesystem::path &scene_dir,
+                       TriangleBudget &budget) {
+  if (!f.value.is_object()) f.fail("must be an object");
+  ObjectMeshes out;
+  if (f.has("obj")) {
+    if (f.has("shape")) f.fail("give either \"shape\" or \"obj\", not both");
+    f.require_object_with_keys({"obj"});
+    const Field obj = f["obj"];
+    const std::string relative = text(obj);
+    if (relative.empty()) obj.fail("must be a path to an OBJ file");
+    // Relative to the scene file's directory, so a scene loads from any working directory.
+    const std::string obj_path = (scene_dir / relative).lexically_normal().string();
+    std::string obj_error;
+    if (!load_obj(obj_path, out.mesh, obj_error)) obj.fail(obj_error);
+  } else if (f.has("shape")) {
+    out = read_shape(f, text(f["shape"]), budget);
+  } else {
+    f.fail("needs a \"shape\" or an \"obj\" path");
+  }
+  budget.spend(f, out.mesh.triangle_count() + out.shadow_mesh.triangle_count());
+  return out;
+}
+
+// Model to world: scale, then rotations about x, y and z (degrees), then translation.
+glm::mat4 model_to_world(const glm::vec3 &scale, const glm::vec3 &rotation_degrees,
+                         const glm::vec3 &translation) {
+  const glm::vec3 r = glm::radians(rotation_degrees);
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), translation);
+  m = glm::rotate(m, r.z, glm::vec3(0.0f, 0.0f, 1.0f));
+  m = glm::rotate(m, r.y, glm::vec3(0.0f, 1.0f, 0.0f));
+  m = glm::rotate(m, r.x, glm::vec3(1.0f, 0.0f, 0.0f));
+  return glm::scale(m, scale);
+}
+
+SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
+                        TriangleBudget &budget) {
+  f.require_object_with_keys({"name", "mesh", "position", "rotation_degrees", "scale", "color",
+                              "casts_shadow", "receives_shadow"});
+  SceneObject object;
+  object.name = f.has("name") ? text(f["name"]) : f.path;
+  if (object.name.empty()) f["name"].fail("must not be empty");
+
+  // The cheap fields first, so that a mistake in them is reported before any mesh is built.
+  glm::vec3 scale(1.0f);
+  if (f.has("scale")) {
+    const Field s = f["scale"];
+    scale = s.value.is_array()
+                ? vec3(s, "a number > 0", positive)
+                : glm::vec3(number(s, "a number > 0 or an array of 3 such numbers", positive));
+  }
+  const glm::vec3 rotation =
+      f.has("rotation_degrees") ? position(f["rotation_degrees"]) : glm::vec3(0.0f);
+  const glm::vec3 translation = f.has("position") ? position(f["position"]) : glm::vec3(0.0f);
+  object.model_to_world = model_to_world(scale, rotation, translation);
+  if (f.has("casts_shadow")) object.casts_shadow = boolean(f["casts_shadow"]);
+  if (f.has("receives_shadow")) object.receives_shadow = boolean(f["receives_shadow"]);
+  const bool recolor = f.has("color");
+  const glm::vec3 new_color = recolor ? color(f["color"]) : glm::vec3(1.0f);
+  if (recolor && f["mesh"].value.contains("body_color"))  // only fighters accept body_color
+    f["color"].fail("a fighter takes body_color or color, not both");
+
+  ObjectMeshes meshes = read_mesh(f["mesh"], scene_dir, budget);
+  if (recolor) {
+    meshes.mesh.set_color(new_color);
+    meshes.shadow_mesh.set_color(new_color);
+  }
+  object.mesh = std::move(meshes.mesh);
+  object.shadow_mesh = std::move(meshes.shadow_mesh);
+  return object;
+}
+
+// The Glide renderer forms a per-pixel attenuated spotlight in the frame's cleared accumulation
+// (one texture unit cannot sample beam and attenuation at once), so only one light can have it.
+void check_one_exact_attenuation(const Field &lights, const std::vector<SpotLight> &read) {
+  std::size_t first = read.size();
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    if (read[i].attenuation.mode != AttenuationMode::PerPixel) continue;
+    if (first == read.size()) {
+      first = i;
+      continue;
+    }
+    lights.item(i)["attenuation"]["mode"].fail(
+        "\"exact\" is already used by " + lights.item(first).path +
+        ": one light per scene can have exact attenuation (a Voodoo's single texture unit); use "
+        "\"vertex\"");
+  }
+}
+
+void read_scene(const json &document, const std::filesystem::path &scene_dir, Scene &scene) {
+  const Field root{document, ""};
+  if (!document.is_object()) root.fail("the file must hold a JSON object");
+  root.require_object_with_keys(
+      {"description", "screen", "camera", "ambient", "background", "lights", "objects"});
+  if (root.has("description")) text(root["description"]);
+  if (root.has("screen")) read_screen(root["screen"], scene);
+  read_camera(root["camera"], scene.camera);
+  if (root.has("ambient")) scene.ambient = color(root["ambient"]);
+  if (root.has("background")) scene.background = color(root["background"]);
+
+  if (root.has("lights")) {
+    const Field lights = root["lights"];
+    if (!lights.value.is_array()) lights.fail("must be an array");
+    if (lights.value.size() > kMaxLights)
+      lights.fail("has " + std::to_string(lights.value.size()) + " lights, more than the limit of " +
+                  std::to_string(kMaxLights));
+    for (std::size_t i = 0; i < lights.value.size(); ++i)
+      scene.lights.push_back(read_light(lights.item(i), scene_dir));
+    check_one_exact_attenuation(lights, scene.lights);
+  }
+
+  const Field objects = root["objects"];
+  if (!objects.value.is_array() || objects.value.empty())
+    objects.fail("must be an array of at least one object");
+  TriangleBudget budget;
+  std::map<std::string, std::string> names;  // object name -> JSON path of its first use
+  for (std::size_t i = 0; i < objects.value.size(); ++i) {
+    const Field f = objects.item(i);
+    SceneObject object = read_object(f, scene_dir, budget);
+    const auto inserted = names.emplace(object.name, f.path);
+    if (!inserted.second)
+      throw SceneError{f.child_path("name"),
+                       "'" + object.name + "' is already the name of " + inserted.first->second};
+    scene.objects.push_back(std::move(object));
+  }
+}
+
+}  // namespace
+
+bool load_scene(const std::string &path, Scene &scene, std::string &error) {
+  try {
+    Scene loaded;
+    read_scene(parse_file(path), std::filesystem::path(path).parent_path(), loaded);
+    scene = std::move(loaded);
+    return true;
+  } catch (const SceneError &e) {
+    error = path + ": " + (e.where.empty() ? "" : e.where + ": ") + e.problem;
+  } catch (const std::bad_alloc &) {
+    error = path + ": out of memory while loading";
+  } catch (const std::exception &e) {
+    error = path + ": " + e.what();
+  } catch (...) {
+    error = path + ": unexpected error while loading";
+  }
+  return false;
+}
+
+}  // namespace gs

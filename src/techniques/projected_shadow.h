@@ -1,0 +1,128 @@
+// Hubert Nguyen's projected shadow texture (Game Developer, 1999), written against Glide as the
+// article's five steps: render the caster flat from the light; make an ARGB_4444 texture of it;
+// compute (s, t) for the receivers; render the scene; render the flagged triangles again with
+// the texture. One texture per caster and light; the caster never receives its own shadow.
+#pragma once
+
+#include "scene/scene.h"
+#include "techniques/scene_pass.h"
+
+#include <glide.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace gs {
+
+enum class ShadowAlpha { Constant, Distance };  // iterated alpha: the light's strength, or it
+                                                // fading with the receiver's distance
+
+struct ProjectedShadowOptions {
+  int size = 0;                // shadow map side in texels, 32..512, for every light; 0: each
+                               // light's shadow_size. Above 256 (a Voodoo 1 texture's limit)
+                               // the map is split into 256x256 tiles
+  bool auto_size = false;      // pick the size from the caster's size on screen (LOD)
+  bool bilinear = true;
+  bool direct_path = false;    // step 1 renders straight into texture memory (no LFB read)
+  bool chroma_key = false;     // the article's Figure 15 alternative to the alpha mask
+  bool projective = true;      // per-pixel s/q (W_DIFF_TMU0); false: the article's per-vertex s
+  ShadowAlpha alpha = ShadowAlpha::Constant;
+  int border_texels = 2;       // clean border the light's view keeps around the caster
+};
+
+// The light's view of one caster (step 1's camera), fitted to the caster's bounding sphere.
+struct LightView {
+  glm::mat4 view{1.0f};             // world to light view space (the light looks down -z)
+  glm::mat4 projection{1.0f};       // light view to light clip space
+  glm::vec3 position{0.0f};         // world
+  float caster_front = 0.0f;        // light-view distance to the caster's nearest bound
+  float caster_distance = 0.0f;     // light to the caster's centre
+  int size = 256;                   // texels of this texture
+  bool clip_to_view = false;        // a tile of a larger map: receivers are clipped to its part
+  bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
+                                    // in the back buffer; a larger one goes direct)
+  bool usable = false;              // false: the light is too close for a clean border
+  std::string problem;              // why not, for the user
+  std::string note;                 // a change the user asked for did not get (path fallback)
+  // Which 16x16 cells of the texture the caster's triangles touch (a bounding-box cover, so
+  // conservative): step 3 skips receiver triangles that see only empty cells, where step 5
+  // would blend alpha 0 and change nothing.
+  // Per cell also the caster's nearest light-view depth (w): a receiver wholly nearer the light
+  // than that, in every cell it sees, lies between the light and the caster and stays lit.
+  static constexpr int kCells = 16;
+  std::vector<bool> occupied = std::vector<bool>(kCells * kCells, false);
+  std::vector<float> nearest = std::vector<float>(kCells * kCells, INFINITY);
+};
+
+struct ShadowTexture {
+  FxU32 address = 0;  // in TMU memory
+  GrTexInfo info{};
+};
+
+// A receiver triangle the texture is projected onto, ready for step 5 (screen vertices with
+// sow, tow and the projective divisor; colour unused).
+struct ShadowTriangle {
+  GrVertex v[3];
+};
+
+struct ReceiverCoords {
+  std::vector<ShadowTriangle> triangles;      // unclipped: the step-4 screen vertices
+  std::vector<std::vector<GrVertex>> clipped;  // clipped by the caster's front plane or camera
+};
+
+struct StepTimes {
+  double ms[5] = {};  // steps 1..5
+  double total_ms = 0.0;
+};
+
+// One shadow: a caster under a light.
+struct ShadowJob {
+  std::size_t caster = 0;  // index into scene.objects
+  std::size_t light = 0;   // index into scene.lights
+  LightView view;
+  ShadowTexture texture;
+  ReceiverCoords receivers;
+};
+
+// Step 1, in three parts. The light's view fitted to the caster's bounding sphere, keeping a
+// clean border; a map larger than a Voodoo 1 texture split into 256x256 tiles; and the caster
+// drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled) in a
+// size x size region: the back buffer's top-left corner, or texture memory at
+// `texture_address` on the direct path.
+LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
+                         const ProjectedShadowOptions &options);
+std::vector<LightView> split_into_textures(const LightView &view);
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address);
+// Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
+// GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
+ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
+                                  FxU32 texture_address);
+// Step 3. Every receiver but the caster in the light's space: Listing 2's flags (facing the
+// light, not wholly outside its view), clipped where it is nearer the light than the caster, and
+// (s, t) from the light-space x, y in Glide's 0..256 units.
+ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
+                                       std::size_t caster, const SpotLight &light,
+                                       const LightView &view, const ProjectedShadowOptions &options);
+// Step 4 is render_scene (scene_pass.h).
+// Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, LEQUAL W-buffer,
+// alpha = texture alpha x iterated alpha, blended over the scene.
+void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options);
+
+struct ShadowFrame {
+  StepTimes times;
+  std::vector<ShadowJob> jobs;        // one per caster and light that got a shadow
+  std::vector<std::string> warnings;  // casters left without a shadow, and why
+};
+
+// The whole frame in the article's order, into the back buffer. With `synchronous`, each step
+// ends with grSstIdle so its time includes the rendering it queued.
+ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOptions &options,
+                                     bool synchronous);
+
+// The shadow mask of a frame just rendered: every pixel step 5 darkened, white on black, drawn
+// into the back buffer over the frame's depth buffer (call before the next clear).
+void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame);
+
+}  // namespace gs

@@ -1,0 +1,56 @@
+// Stencil shadow volumes after Kwoon's "The Theory of Stencil Shadow Volumes", drawn in plain GL
+// (glideShimBeginGL .. glideShimEndGL) into Glide's back buffer: an ambient pass, then per light
+// the casters' silhouettes extruded to infinity counted into the stencil buffer (z-pass, or z-fail
+// with caps when the camera may be inside a volume), then that light added where the count is 0.
+#pragma once
+
+#include "techniques/technique.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace gs {
+
+// A caster welded by position into one surface, which is what silhouettes and caps need: a
+// mesh's corners are often split for flat normals (a box's faces) or seams.
+struct EdgeMesh {
+  std::vector<glm::vec3> positions;   // model space, each distinct position once
+  std::vector<glm::uvec3> triangles;  // into `positions`, CCW from outside, three distinct corners
+                                      // not on one line
+  // Every triangle's three edges (from, to, triangle), sorted so that the uses of one undirected
+  // edge are adjacent.
+  std::vector<glm::uvec3> edges;
+  // Every edge is walked as often one way as the other (so the surface encloses a volume). Two
+  // parts touching at an edge still count as closed.
+  bool closed = false;
+};
+
+// Welds `mesh` (exactly equal positions) and builds its edges; not closed for an open surface,
+// a non-finite position or an index out of range.
+EdgeMesh build_edge_mesh(const Mesh &mesh);
+
+// Per triangle of `mesh`: whether it faces the point light at `light` (world), with `world` the
+// mesh's positions in world space (one per EdgeMesh position).
+std::vector<bool> light_facing(const EdgeMesh &mesh, const std::vector<glm::vec3> &world,
+                               const glm::vec3 &light);
+
+// An edge between a light-facing and a back-facing triangle, in the direction the light-facing
+// one walks it (indices into EdgeMesh::positions). An edge where two parts meet may appear twice.
+struct SilhouetteEdge {
+  glm::uint from = 0, to = 0;
+};
+std::vector<SilhouetteEdge> find_silhouette(const EdgeMesh &mesh, const std::vector<bool> &facing);
+
+// Conservatively, whether the camera's near-plane rectangle may lie inside the shadow volume of
+// any caster under `light` (then z-pass counts wrongly and z-fail is needed). Each caster's
+// volume is bounded by the cone from the light around its bounding sphere, beyond the sphere's
+// nearest distance from the light.
+bool near_plane_may_be_in_shadow(const Scene &scene, const SpotLight &light);
+
+// The "stencil-volume" technique. Steps: "1 ambient pass", "2 silhouettes and volumes",
+// "3 lit pass". Casters that are not closed are skipped with a warning (once per name).
+std::unique_ptr<ShadowTechnique> make_stencil_volume_shadow(const TechniqueOptions &options);
+
+}  // namespace gs
