@@ -120,7 +120,7 @@ case "${1:-}" in
   demo)
     build
     shift
-    ./build/src/glideshadows demo --frames 96 --out out/demo --contact-sheet --gif "$@"
+    ./build/glideshadows demo --frames 96 --out out/demo --contact-sheet --gif "$@"
     echo "run.sh: frames in out/demo/ (frame_NNNN.png), out/demo/contact_sheet.png, out/demo/fight.gif"
     ;;
   test)

@@ -1,3 +1,4 @@
+// The demo driver (fight_demo.h): the fight at each frame's time, through the technique, to PNG.
 #include "fight_demo.h"
 
 #include "measure/speed_error.h"
