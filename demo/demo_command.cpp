@@ -1,5 +1,5 @@
 // `glideshadows demo`: the fight headless to PNG frames, optionally a contact sheet and a GIF,
-// then the step table.
+// then the step table; with --window, the fight played in a window instead (fight_window.h).
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "fight_demo.h"
@@ -121,7 +121,8 @@ Command add_demo_command(CLI::App &app) {
   demo->add_flag("--window", o->window,
                  "play the fight in a window (SDL2) instead of writing frames; --frames then stops "
                  "after that many frames. Keys below");
-  demo->add_flag("--paused", o->paused, "with --window: start paused on the first frame");
+  demo->add_flag("--paused", o->paused, "with --window: start paused on the first frame")
+      ->needs(demo->get_option("--window"));
   std::string keys = "Keys in the --window:\n";
   for (const std::string &line : demo::window_key_help()) keys += "  " + line + "\n";
   demo->footer(keys);

@@ -17,7 +17,7 @@
 namespace gs {
 namespace {
 
-const glm::vec3 kBodyColors[2] = {{0.75f, 0.12f, 0.1f}, {0.12f, 0.25f, 0.75f}};
+const glm::vec3 kBodyColors[2] = {{0.8f, 0.12f, 0.1f}, {0.16f, 0.34f, 0.95f}};  // bright: the shadow reads on them
 constexpr float kStartX = 0.55f;  // each fighter's distance from the centre, metres: in reach
 
 // Azimuths in degrees about the y axis, world: 0 looks from +z (the camera's side of the ring),

@@ -38,6 +38,7 @@ std::vector<std::string> run_sh_demo_defaults() {
 std::string scratch(const std::string &name) {
   const fs::path dir = fs::path(::testing::TempDir()) / "demo_tests" / name;
   fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
   return dir.string();
 }
 

@@ -4,10 +4,12 @@
 // seen in the window and in the line the demo prints for it.
 #include "x_session.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <filesystem>
+#include <memory>
 
 namespace {
 
@@ -18,6 +20,14 @@ std::string output_file(const std::string &name) {
   const std::filesystem::path dir = std::filesystem::path(DEMO_WINDOW_OUTPUT_DIR);
   std::filesystem::create_directories(dir);
   return (dir / name).string();
+}
+
+// A screenshot also as PNG beside its xwd, for people looking at a failure.
+void save_png(const RgbImage &image, const std::string &path) {
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+  if (!out || !out->open(path, OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8))) return;
+  out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data());
+  out->close();
 }
 
 // Pixels that differ inside the rectangle [x0, x1) x [y0, y1).
@@ -68,6 +78,7 @@ class DemoInWindow : public ::testing::Test {
     RgbImage image;
     std::string error;
     EXPECT_TRUE(window_test::screenshot(window, output_file(name + ".xwd"), image, error)) << error;
+    save_png(image, output_file(name + ".png"));
     return image;
   }
 
@@ -84,6 +95,7 @@ TEST_F(DemoInWindow, PausedItShowsTheHeadlessFramesAndTheKeysChangeTheView) {
   RgbImage with_overlay;
   std::string error;
   ASSERT_TRUE(window_test::screenshot(window, output_file("overlay.xwd"), with_overlay, error)) << error;
+  save_png(with_overlay, output_file("overlay.png"));
   ASSERT_EQ(with_overlay.width, 640);
   ASSERT_EQ(with_overlay.height, 480);
   // The overlay (top left) is on at the start; the rest of the frame is the headless one.
