@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine: installs the Debian packages the project needs
 # (only the missing ones), configures and builds in Release, then runs the job asked for.
-#   ./run.sh demo    build, then render the fighter demo (PNG frames, contact sheet, GIF, timing)
+#   ./run.sh demo    build, then render the fighter demo (PNG frames, contact sheet, GIF, timing);
+#                    further arguments go to `glideshadows demo` and override the defaults
+#   ./run.sh play    build, then the fighter demo in a window (SDL2) with keys: H shows them
 #   ./run.sh test    build, then run the whole test suite (ctest)
 #   ./run.sh bench   build, then run the benchmark programs
 #   ./run.sh sanitize  build in build-asan/ with ASan+UBSan, then run the whole test suite there
@@ -12,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 usage() {
-  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 PACKAGES=(
@@ -116,12 +118,20 @@ run_fuzzers() {
 # Mesa's shader cache would otherwise write to ~/.cache; it changes no pixel.
 export MESA_SHADER_CACHE_DISABLE=${MESA_SHADER_CACHE_DISABLE:-true}
 
+# `./run.sh demo`'s arguments to `glideshadows demo` (one 8 s fight loop); the user's come after
+# them and win, as the demo takes an option's last value (tests/demo reads this line).
+DEMO_DEFAULTS=(--frames 96 --fps 12 --out out/demo --contact-sheet --gif)
+
 case "${1:-}" in
   demo)
     build
     shift
-    ./build/glideshadows demo --frames 96 --out out/demo --contact-sheet --gif "$@"
-    echo "run.sh: frames in out/demo/ (frame_NNNN.png), out/demo/contact_sheet.png, out/demo/fight.gif"
+    ./build/glideshadows demo "${DEMO_DEFAULTS[@]}" "$@"
+    ;;
+  play)
+    build
+    shift
+    ./build/glideshadows demo --window "$@"
     ;;
   test)
     build
