@@ -127,6 +127,78 @@ TechniqueOptions options_for(const WindowSettings &settings, const ViewState &st
   return options;
 }
 
+enum class KeyEffect { View, NewTechnique, Quit };
+
+// What `key` changes in `state`, printed to `log` as one line; whether the technique must be
+// made anew or the window closed.
+KeyEffect apply_key(int key, ViewState &state, float frame_seconds, std::FILE *log) {
+  const std::size_t techniques = technique_names().size();
+  KeyEffect effect = KeyEffect::View;
+  switch (key) {
+    case ' ':
+      state.paused = !state.paused;
+      std::fprintf(log, "glideshadows demo: %s at %.3f s\n", state.paused ? "paused" : "playing", state.time);
+      break;
+    case '.': case ',':
+      state.paused = true;
+      state.time = std::max(0.0f, state.time + (key == '.' ? frame_seconds : -frame_seconds));
+      std::fprintf(log, "glideshadows demo: paused at %.3f s\n", state.time);
+      break;
+    case GLIDESHIM_KEY_LEFT: case GLIDESHIM_KEY_RIGHT:
+      state.camera_orbit += key == GLIDESHIM_KEY_LEFT ? -10.0f : 10.0f;
+      std::fprintf(log, "glideshadows demo: camera orbit %.0f degrees\n", state.camera_orbit);
+      break;
+    case GLIDESHIM_KEY_UP: case GLIDESHIM_KEY_DOWN:
+      state.zoom = std::clamp(state.zoom * (key == GLIDESHIM_KEY_UP ? 0.9f : 1.0f / 0.9f), 0.4f, 2.5f);
+      std::fprintf(log, "glideshadows demo: camera zoom %.2f\n", state.zoom);
+      break;
+    case 'a': case 'd':
+      state.light_orbit += key == 'a' ? -10.0f : 10.0f;
+      std::fprintf(log, "glideshadows demo: light orbit %.0f degrees\n", state.light_orbit);
+      break;
+    case 'w': case 's':
+      state.light_raise = std::clamp(state.light_raise + (key == 'w' ? 0.2f : -0.2f), -1.6f, 4.0f);
+      std::fprintf(log, "glideshadows demo: light raised %.1f m\n", state.light_raise);
+      break;
+    case 't': case 'T':
+      state.technique = (state.technique + (key == 't' ? 1 : techniques - 1)) % techniques;
+      effect = KeyEffect::NewTechnique;
+      break;
+    case '+': case '=': case '-': {
+      const int *size = std::find(std::begin(kShadowSizes), std::end(kShadowSizes), state.shadow_size);
+      if (key == '-' && size != std::begin(kShadowSizes)) --size;
+      if (key != '-' && size + 1 != std::end(kShadowSizes)) ++size;
+      state.shadow_size = size == std::end(kShadowSizes) ? 256 : *size;
+      effect = KeyEffect::NewTechnique;
+      break;
+    }
+    case 'u':
+      state.auto_size = !state.auto_size;
+      effect = KeyEffect::NewTechnique;
+      break;
+    case 'v':
+      state.inset = !state.inset;
+      std::fprintf(log, "glideshadows demo: inset %s\n", state.inset ? "on" : "off");
+      break;
+    case 'o':
+      state.overlay = !state.overlay;
+      std::fprintf(log, "glideshadows demo: overlay %s\n", state.overlay ? "on" : "off");
+      break;
+    case 'h': case GLIDESHIM_KEY_F1:
+      state.help = !state.help;
+      std::fprintf(log, "glideshadows demo: help %s\n", state.help ? "on" : "off");
+      break;
+    case 'r':
+      state.camera_orbit = state.light_orbit = state.light_raise = 0.0f;
+      state.zoom = 1.0f;
+      std::fprintf(log, "glideshadows demo: camera and light reset\n");
+      break;
+    case GLIDESHIM_KEY_ESCAPE: case 'q': return KeyEffect::Quit;
+    default: break;
+  }
+  return effect;
+}
+
 }  // namespace
 
 const std::vector<std::string> &window_key_help() {
@@ -157,7 +229,8 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
   state.shadow_size = settings.options.projected.size;
   state.auto_size = settings.options.projected.auto_size;
   const std::vector<std::string> &names = technique_names();
-  state.technique = static_cast<std::size_t>(std::find(names.begin(), names.end(), settings.technique) - names.begin()) % names.size();
+  const auto named = std::find(names.begin(), names.end(), settings.technique);
+  state.technique = named == names.end() ? 0 : static_cast<std::size_t>(named - names.begin());
   std::string error;
   std::unique_ptr<ShadowTechnique> technique = make_technique(names[state.technique], options_for(settings, state), error);
   FightScene fight(width, height, state.shadow_size);
@@ -173,53 +246,9 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
     bool remake = false;
     for (int key = glideShimPollKey(); key != GLIDESHIM_KEY_NONE; key = glideShimPollKey()) {
       dirty = true;
-      switch (key) {
-        case ' ': state.paused = !state.paused; std::fprintf(log, "glideshadows demo: %s at %.3f s\n", state.paused ? "paused" : "playing", state.time); break;
-        case '.': case ',':
-          state.paused = true;
-          state.time = std::max(0.0f, state.time + (key == '.' ? frame_seconds : -frame_seconds));
-          std::fprintf(log, "glideshadows demo: paused at %.3f s\n", state.time);
-          break;
-        case GLIDESHIM_KEY_LEFT: case GLIDESHIM_KEY_RIGHT:
-          state.camera_orbit += key == GLIDESHIM_KEY_LEFT ? -10.0f : 10.0f;
-          std::fprintf(log, "glideshadows demo: camera orbit %.0f degrees\n", state.camera_orbit);
-          break;
-        case GLIDESHIM_KEY_UP: case GLIDESHIM_KEY_DOWN:
-          state.zoom = std::clamp(state.zoom * (key == GLIDESHIM_KEY_UP ? 0.9f : 1.0f / 0.9f), 0.4f, 2.5f);
-          std::fprintf(log, "glideshadows demo: camera zoom %.2f\n", state.zoom);
-          break;
-        case 'a': case 'd':
-          state.light_orbit += key == 'a' ? -10.0f : 10.0f;
-          std::fprintf(log, "glideshadows demo: light orbit %.0f degrees\n", state.light_orbit);
-          break;
-        case 'w': case 's':
-          state.light_raise = std::clamp(state.light_raise + (key == 'w' ? 0.2f : -0.2f), -1.6f, 4.0f);
-          std::fprintf(log, "glideshadows demo: light raised %.1f m\n", state.light_raise);
-          break;
-        case 't': case 'T':
-          state.technique = (state.technique + (key == 't' ? 1 : names.size() - 1)) % names.size();
-          remake = true;
-          break;
-        case '+': case '=': case '-': {
-          const int *size = std::find(std::begin(kShadowSizes), std::end(kShadowSizes), state.shadow_size);
-          if (key == '-' && size != std::begin(kShadowSizes)) --size;
-          if (key != '-' && size + 1 != std::end(kShadowSizes)) ++size;
-          state.shadow_size = size == std::end(kShadowSizes) ? 256 : *size;
-          remake = true;
-          break;
-        }
-        case 'u': state.auto_size = !state.auto_size; remake = true; break;
-        case 'v': state.inset = !state.inset; std::fprintf(log, "glideshadows demo: inset %s\n", state.inset ? "on" : "off"); break;
-        case 'o': state.overlay = !state.overlay; std::fprintf(log, "glideshadows demo: overlay %s\n", state.overlay ? "on" : "off"); break;
-        case 'h': case GLIDESHIM_KEY_F1: state.help = !state.help; std::fprintf(log, "glideshadows demo: help %s\n", state.help ? "on" : "off"); break;
-        case 'r':
-          state.camera_orbit = state.light_orbit = state.light_raise = 0.0f;
-          state.zoom = 1.0f;
-          std::fprintf(log, "glideshadows demo: camera and light reset\n");
-          break;
-        case GLIDESHIM_KEY_ESCAPE: case 'q': quit = true; break;
-        default: break;
-      }
+      const KeyEffect effect = apply_key(key, state, frame_seconds, log);
+      quit = quit || effect == KeyEffect::Quit;
+      remake = remake || effect == KeyEffect::NewTechnique;
     }
     if (remake) {
       technique = make_technique(names[state.technique], options_for(settings, state), error);
