@@ -42,7 +42,7 @@ bool is_origin(GrOriginLocation_t origin) {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grGlideInit(void) {
   auto &ctx = current();
@@ -154,6 +154,7 @@ FxBool grSstWinOpen(FxU32 hWnd, GrScreenResolution_t screen_resolution,
   }
   ctx.load_window_defaults(size.width, size.height, color_format, origin_location);
   ctx.renderer = std::move(renderer);
+  glide_shim::close_window_at_exit();
   return FXTRUE;
 }
 
@@ -292,4 +293,4 @@ FxBool glideShimSetWindowSize(int width, int height) {
   return FXTRUE;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api
