@@ -406,6 +406,7 @@ void reset_window(const WindowRequest &r) {
 bool start_input(FuzzedDataProvider &in) {
   GlideContext &ctx = glide_shim::current();
   finish_previous_input();
+  grErrorSetCallback(on_error);  // as set at start-up: the callback every check reads
   const WindowRequest r = window_request(in);
   if (!ctx.initialized) grGlideInit();
   const bool reusable = ctx.display.open && ctx.display.width == r.width &&
@@ -834,9 +835,44 @@ void close_and_reopen(FuzzedDataProvider &in) {
   }
 }
 
+// A textured triangle as a program draws one: a valid mip map downloaded and made the source,
+// a texture combine and colour combine that read it, random filtering, clamping and mip-mapping,
+// so that draws go through the texture cache and every format's decoding.
+void textured_draw(FuzzedDataProvider &in, float span) {
+  static constexpr GrTextureFormat_t kFormats[] = {
+      GR_TEXFMT_RGB_332,   GR_TEXFMT_YIQ_422,   GR_TEXFMT_ALPHA_8,          GR_TEXFMT_INTENSITY_8,
+      GR_TEXFMT_ALPHA_INTENSITY_44, GR_TEXFMT_P_8, GR_TEXFMT_ARGB_8332,     GR_TEXFMT_AYIQ_8422,
+      GR_TEXFMT_RGB_565,   GR_TEXFMT_ARGB_1555, GR_TEXFMT_ARGB_4444, GR_TEXFMT_ALPHA_INTENSITY_88,
+      GR_TEXFMT_AP_88};
+  GrTexInfo info{};
+  info.largeLod = in.ConsumeIntegralInRange(GR_LOD_256, GR_LOD_1);
+  info.smallLod = in.ConsumeIntegralInRange(info.largeLod, GR_LOD_1);
+  info.aspectRatio = in.ConsumeIntegralInRange(GR_ASPECT_8x1, GR_ASPECT_1x8);
+  info.format = kFormats[in.ConsumeIntegralInRange<std::size_t>(0, 12)];
+  std::vector<std::uint8_t> data =
+      texel_data(in, host_chain_bytes(info.smallLod, info.largeLod, info.aspectRatio, info.format));
+  info.data = data.data();
+  const FxU32 address = in.ConsumeIntegralInRange<FxU32>(0, 15) * 65536u;
+  checked("grTexDownloadMipMap", kMemory,
+          [&] { grTexDownloadMipMap(GR_TMU0, address, GR_MIPMAPLEVELMASK_BOTH, &info); });
+  checked("grTexSource", [&] { grTexSource(GR_TMU0, address, GR_MIPMAPLEVELMASK_BOTH, &info); });
+  const int texture_combine = in.ConsumeIntegralInRange(GR_TEXTURECOMBINE_DECAL, GR_TEXTURECOMBINE_ONE);
+  checked("guTexCombineFunction", [&] { guTexCombineFunction(GR_TMU0, texture_combine); });
+  const int color_combine = in.ConsumeIntegralInRange(GR_COLORCOMBINE_DECAL_TEXTURE,
+                                                      GR_COLORCOMBINE_TEXTURE_TIMES_ALPHA_ADD_ITRGB);
+  checked("guColorCombineFunction", [&] { guColorCombineFunction(color_combine); });
+  const int filter = in.ConsumeIntegralInRange(0, 1), clamp = in.ConsumeIntegralInRange(0, 1);
+  checked("grTexFilterMode", [&] { grTexFilterMode(GR_TMU0, filter, filter); });
+  checked("grTexClampMode", [&] { grTexClampMode(GR_TMU0, clamp, clamp); });
+  const int mipmap = in.ConsumeIntegralInRange(GR_MIPMAP_DISABLE, GR_MIPMAP_NEAREST_DITHER);
+  checked("grTexMipMapMode", [&] { grTexMipMapMode(GR_TMU0, mipmap, FXFALSE); });
+  const GrVertex a = vertex(in, span), b = vertex(in, span), c = vertex(in, span);
+  checked("grDrawTriangle", [&] { grDrawTriangle(&a, &b, &c); });
+}
+
 void more_calls(FuzzedDataProvider &in, float span) {
   GlideContext &ctx = glide_shim::current();
-  switch (in.ConsumeIntegralInRange(0, 40)) {
+  switch (in.ConsumeIntegralInRange(0, 42)) {
     case 0: {
       const GrVertex v = vertex(in, span);
       checked("grAADrawPoint", [&] { grAADrawPoint(in.ConsumeIntegralInRange(0, 31) == 0 ? nullptr : &v); });
@@ -1159,6 +1195,10 @@ void more_calls(FuzzedDataProvider &in, float span) {
       checked("grTexMaxAddress", [&] { grTexMaxAddress(tmu); });
       break;
     }
+    case 40:
+    case 41:
+      textured_draw(in, span);
+      break;
     default: {
       const int width = in.ConsumeIntegralInRange(-2, glide_shim::kMaxScreenSide + 2);
       const int height = in.ConsumeIntegralInRange(-2, glide_shim::kMaxScreenSide + 2);

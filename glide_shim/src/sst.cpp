@@ -164,6 +164,7 @@ void grSstWinClose(void) {
   ctx.flush();
   glide_shim::hold_last_frame(ctx);
   ctx.renderer.reset();
+  ctx.plain_gl = false;  // a GL context lent by glideShimBeginGL is gone with the window
   ctx.display.open = false;
   ctx.tmu.memory.clear();
   ctx.tmu.memory.shrink_to_fit();

@@ -64,4 +64,21 @@ TEST_F(FuzzFindings, DepthRegionReadWithAnOddStride) {
   }
 }
 
+// glide_api_fuzz: closing the window between glideShimBeginGL and glideShimEndGL left plain GL
+// begun with no renderer, and glideShimEndGL then called through a null pointer. Closing the
+// window ends plain GL: glideShimEndGL reports that none is begun, and a new window works.
+TEST_F(FuzzFindings, ClosingTheWindowEndsPlainGl) {
+  ASSERT_EQ(glideShimBeginGL(), FXTRUE);
+  grSstWinClose();
+  glideShimClearError();
+  glideShimEndGL();
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_INCONSISTENT);
+  glideShimClearError();
+  ASSERT_EQ(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                         GR_ORIGIN_UPPER_LEFT, 2, 1),
+            FXTRUE);
+  grBufferClear(0, 0, 0);
+  expect_no_error();
+}
+
 }  // namespace
