@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <new>
-#include <regex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -220,17 +220,36 @@ TEST(EntryPoints, EveryDeclaredFunctionIsExported) {
       text += line + "\n";
     }
   }
-  text = std::regex_replace(text, std::regex(R"(/\*[^*]*\*+([^/*][^*]*\*+)*/)"), " ");
-  const std::regex declaration(R"((?:FX_ENTRY|GLIDESHIM_API)\s+[^;{(]*?\b(\w+)\s*\()");
+  // Drop comments, then take the name before the '(' that follows each FX_ENTRY or
+  // GLIDESHIM_API.
+  std::string code;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text.compare(i, 2, "/*") == 0) {
+      const std::size_t end = text.find("*/", i + 2);
+      i = end == std::string::npos ? text.size() : end + 1;
+      code += ' ';
+    } else {
+      code += text[i];
+    }
+  }
   void *library = dlopen(GLIDESHIM_LIBRARY, RTLD_NOW | RTLD_NOLOAD);
   if (library == nullptr) library = dlopen(GLIDESHIM_LIBRARY, RTLD_NOW);
   ASSERT_NE(library, nullptr) << dlerror();
   int count = 0;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), declaration);
-       it != std::sregex_iterator(); ++it) {
-    const std::string name = (*it)[1];
-    EXPECT_NE(dlsym(library, name.c_str()), nullptr) << name << " is declared but not exported";
-    ++count;
+  for (const std::string marker : {"FX_ENTRY", "GLIDESHIM_API"}) {
+    for (std::size_t at = code.find(marker); at != std::string::npos;
+         at = code.find(marker, at + 1)) {
+      std::size_t end = code.find('(', at);
+      ASSERT_NE(end, std::string::npos);
+      while (end > at && code[end - 1] == ' ') --end;
+      std::size_t begin = end;
+      while (begin > at && (std::isalnum(static_cast<unsigned char>(code[begin - 1])) != 0 ||
+                            code[begin - 1] == '_'))
+        --begin;
+      const std::string name = code.substr(begin, end - begin);
+      EXPECT_NE(dlsym(library, name.c_str()), nullptr) << name << " is declared but not exported";
+      ++count;
+    }
   }
   EXPECT_GE(count, 147);
   dlclose(library);
