@@ -198,7 +198,8 @@ bool classes() {
   std::vector<Column> columns;
   for (const char *name :
        {"wall_behind_light", "bar_beside_light", "light_inside_tube", "bar_across_narrow_cone",
-        "plank_square_beam", "two_rods_wide_cone", "flags_sign_and_ball", "tilted_plate_oblique",
+        "plank_square_beam", "two_rods_wide_cone", "gobo_bars", "flags_sign_and_ball",
+        "tilted_plate_oblique",
         "light_facing_camera_posts"}) {
     columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
   }

@@ -34,6 +34,7 @@ LightBeam light_beam(const SpotLight &light) {
       beam.inner.push_back(to_world(view, light.position, n));
     }
     beam.outer = beam.inner;
+    beam.regions = {beam.inner};
     return beam;
   }
   // Tangent planes at azimuths phi_k hold the cone (x cos + y sin <= t (-z)); planes through
@@ -50,6 +51,21 @@ LightBeam light_beam(const SpotLight &light) {
   }
   // The cone inscribed in the inner pyramid, a little narrower for float rounding.
   beam.inner_cosine = std::cos(std::atan(t * std::cos(half_step) * 0.999f));
+  if (light.beam == "gobo") {
+    // The bars: |x| < 0.05 t (-z) and |y| < 0.05 t (-z) (spotlight.cpp's gobo_beam); each pane
+    // keeps x (or y) on one side, e.g. x + 0.05 t z >= 0.
+    for (float sx : {-1.0f, 1.0f}) {
+      for (float sy : {-1.0f, 1.0f}) {
+        std::vector<glm::vec4> pane = beam.inner;
+        pane.push_back(to_world(view, light.position, {sx, 0.0f, 0.05f * t}));
+        pane.push_back(to_world(view, light.position, {0.0f, sy, 0.05f * t}));
+        beam.regions.push_back(std::move(pane));
+      }
+    }
+    beam.inner_cosine = -2.0f;  // a point in the disc may be in a bar: only the planes tell
+  } else {
+    beam.regions = {beam.inner};
+  }
   return beam;
 }
 
@@ -57,7 +73,10 @@ bool LightBeam::surely_inside(const glm::vec3 &world) const {
   const glm::vec3 to_point = world - position;
   const float distance = glm::length(to_point);
   if (inner_cosine >= -1.0f) return distance > 0.0f && glm::dot(axis, to_point) >= inner_cosine * distance;
-  return inside_planes(inner, world);
+  for (const std::vector<glm::vec4> &region : regions) {
+    if (inside_planes(region, world)) return true;
+  }
+  return false;
 }
 
 bool inside_planes(const std::vector<glm::vec4> &planes, const glm::vec3 &world) {

@@ -9,7 +9,7 @@
 // outside the unit circle of the beam plane) is the cone: `kConeSides` planes inscribed in it and
 // as many tangent to it, which differ from the cone by 1 - cos(pi / 64), 0.12% of its radius.
 // A square beam, or an image, fills the beam plane's square: the same four planes inside and out.
-// Inside the footprint a map's dark parts (a gobo's bars) are not excluded.
+// Inside the footprint an image's dark parts are not excluded (a gobo's bars are: `regions`).
 #pragma once
 
 #include "scene/scene.h"
@@ -24,6 +24,10 @@ constexpr int kConeSides = 64;
 
 struct LightBeam {
   std::vector<glm::vec4> inner, outer;  // world planes through the light
+  // Convex pieces of `inner` whose union is where the beam is lit: `inner` itself, or for the
+  // gobo its four panes (the bars, |u| or |v| under 0.05 on the beam plane, are planes through
+  // the light too). Shadows are clipped to each piece.
+  std::vector<std::vector<glm::vec4>> regions;
   glm::vec3 position{0.0f}, axis{0.0f, 0.0f, -1.0f};  // world; axis unit
   // A point at least this cosine from the axis lies inside `inner` (the cone inscribed in the
   // inner pyramid); -2 for a square beam, where only the planes tell.

@@ -180,9 +180,9 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
 }
 
 // A convex polygon during clipping: a triangle cut by five planes has at most eight corners, and
-// the beam's planes (at most kConeSides) add one each.
+// the beam region's planes (at most kConeSides and a gobo's two bars) add one each.
 struct SmallPolygon {
-  std::array<glm::vec3, 8 + kConeSides> v;
+  std::array<glm::vec3, 10 + kConeSides> v;
   std::size_t n = 0;
 };
 
@@ -282,13 +282,17 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
               continue;
             }
             ++result.pairs_clipped;
-            cast_on(c, r, light.position, height, beam.inner, polygon, scratch);
-            if (polygon.n < 3) continue;
-            out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
-                                    static_cast<std::uint32_t>(polygon.n),
-                                    static_cast<std::uint32_t>(receiver.object), r.index});
-            out.vertices.insert(out.vertices.end(), polygon.v.begin(),
-                                polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+            // Beyond the beam's sure inside: one polygon per lit region (light_beam.h).
+            const std::size_t pieces = r.beyond_beam ? beam.regions.size() : 1;
+            for (std::size_t piece = 0; piece < pieces; ++piece) {
+              cast_on(c, r, light.position, height, beam.regions[piece], polygon, scratch);
+              if (polygon.n < 3) continue;
+              out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
+                                      static_cast<std::uint32_t>(polygon.n),
+                                      static_cast<std::uint32_t>(receiver.object), r.index});
+              out.vertices.insert(out.vertices.end(), polygon.v.begin(),
+                                  polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+            }
           }
         }
       }

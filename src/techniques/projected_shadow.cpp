@@ -168,9 +168,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
     return view;
   }
   const LightBeam beam = light_beam(light);
-  view.beam_planes = beam.inner;
-  view.beam_cosine = beam.inner_cosine;
-  view.beam_axis = beam.axis;
+  view.beam = beam;
   // The view keeps `border_texels` (plus one for the 1/16-pixel snap and bilinear's reach) clean
   // on every side: the Figure 12/13 bug cannot occur.
   const float usable = 1.0f - 2.0f * static_cast<float>(options.border_texels + 1) /
@@ -409,15 +407,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   }
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
   const glm::mat4 world_from_view = glm::inverse(view.view);
-  std::vector<glm::vec4> beam_planes;
-  for (const glm::vec4 &plane : view.beam_planes) {
-    beam_planes.push_back(glm::transpose(world_from_view) * plane);
+  std::vector<std::vector<glm::vec4>> beam_regions;
+  for (const std::vector<glm::vec4> &region : view.beam.regions) {
+    beam_regions.emplace_back();
+    for (const glm::vec4 &plane : region) {
+      beam_regions.back().push_back(glm::transpose(world_from_view) * plane);
+    }
   }
-  LightBeam beam;
-  beam.position = view.position;
-  beam.axis = view.beam_axis;
-  beam.inner = view.beam_planes;
-  beam.inner_cosine = view.beam_cosine;
+  const LightBeam &beam = view.beam;
   std::vector<ClipVertex> polygon, scratch;
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
@@ -430,7 +427,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const glm::vec4 &p = lc[i];
       flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
                  (p.w < view.caster_front) << 4;
-      if (!beam_planes.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
+      if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
     }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
@@ -466,22 +463,28 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         clip_polygon(polygon, plane, scratch);
         if (polygon.size() < 3) break;
       }
-      if (beyond_beam) {
-        for (const glm::vec4 &plane : beam_planes) {
-          if (polygon.size() < 3) break;
-          clip_polygon(polygon, plane, scratch);
-        }
-      }
       if (polygon.size() < 3) continue;
-      std::vector<glm::vec4> corners;
-      for (const ClipVertex &v : polygon) corners.push_back(view.projection * v.clip);
-      if (!sees_caster(view, corners.data(), corners.size())) continue;
-      std::vector<GrVertex> screen;
-      project_camera_polygon(frame, scene, polygon, scratch, screen);
-      for (std::size_t i = 0; i < screen.size(); ++i) {
-        set_texture_fields(screen[i], view, light, polygon[i].world, options);
+      // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
+      const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
+      for (std::size_t piece = 0; piece < pieces; ++piece) {
+        std::vector<ClipVertex> part = polygon;
+        if (beyond_beam) {
+          for (const glm::vec4 &plane : beam_regions[piece]) {
+            if (part.size() < 3) break;
+            clip_polygon(part, plane, scratch);
+          }
+        }
+        if (part.size() < 3) continue;
+        std::vector<glm::vec4> corners;
+        for (const ClipVertex &v : part) corners.push_back(view.projection * v.clip);
+        if (!sees_caster(view, corners.data(), corners.size())) continue;
+        std::vector<GrVertex> screen;
+        project_camera_polygon(frame, scene, part, scratch, screen);
+        for (std::size_t i = 0; i < screen.size(); ++i) {
+          set_texture_fields(screen[i], view, light, part[i].world, options);
+        }
+        if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
       }
-      if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
     }
   }
   return coords;

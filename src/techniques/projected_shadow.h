@@ -6,6 +6,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
 
 #include <glide.h>
@@ -56,11 +57,9 @@ struct LightView {
   // Light view space planes step 1 clips the caster to (a plane just in front of the light and
   // the view's square inside its clean border); empty when the whole caster is inside them.
   std::vector<glm::vec4> caster_planes;
-  // World planes of the light's inner beam (light_beam.h): step 3 clips receivers to them, so
-  // step 5 darkens nothing the light does not reach.
-  std::vector<glm::vec4> beam_planes;
-  float beam_cosine = -2.0f;        // LightBeam::inner_cosine, for the quick test
-  glm::vec3 beam_axis{0.0f, 0.0f, -1.0f};
+  // The light's beam (light_beam.h): step 3 clips receivers to its lit regions, so step 5
+  // darkens nothing the light does not reach.
+  LightBeam beam;
   // Which 16x16 cells of the texture the caster's triangles touch (a bounding-box cover, so
   // conservative): step 3 skips receiver triangles that see only empty cells, where step 5
   // would blend alpha 0 and change nothing.

@@ -599,6 +599,7 @@ TEST(HardCases, ShadowStopsAtTheSquareBeamsSides) {
 TEST(HardCases, ShadowStopsAtTheConeInsideCoarseTriangles) {
   expect_right_or_refused("two_rods_wide_cone.json");
 }
+TEST(HardCases, ShadowStopsAtTheGobosBars) { expect_right_or_refused("gobo_bars.json"); }
 
 // casts_shadow and receives_shadow, as the truth and every technique honour them.
 TEST(HardCases, SceneFlagsAreHonouredByTruthAndTechniques) {

@@ -228,8 +228,10 @@ TEST_F(ProjectedShadowTest, ACasterSurroundingTheLightIsANamedError) {
 }
 
 TEST_F(ProjectedShadowTest, ACasterOutsideTheConeCastsNothingAndSaysNothing) {
+  // The 60-degree cone from 8 m reaches 4.04 m from its axis at the box's bottom (y = 1): a box
+  // from x = 4.5 to 5.5 lies wholly outside it.
   gs::Scene scene = box_over_floor();
-  scene.objects[1].model_to_world = glm::translate(glm::mat4(1.0f), {4.5f, 1.5f, 0});
+  scene.objects[1].model_to_world = glm::translate(glm::mat4(1.0f), {5.0f, 1.5f, 0});
   gs::ShadowFrame frame;
   shadow_mask(scene, {}, &frame);
   EXPECT_TRUE(frame.errors.empty());
