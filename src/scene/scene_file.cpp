@@ -38,6 +38,11 @@ constexpr unsigned kMaxStacks = 1000;     // sphere: 2 * 1000 * 1000 triangles a
 constexpr unsigned kMaxScreenSide = 2048;
 constexpr std::size_t kMaxLights = 16;  // each light is at least one more pass over the scene
 constexpr std::size_t kMaxSceneFileBytes = 16u << 20;  // far above any hand-written scene
+// The parse's budget, checked while reading (before any value is kept), so that any file under
+// the size limit parses in bounded time and memory: a scene nests 5 levels and holds a few
+// thousand values (meshes are shapes or OBJ files, never inline arrays).
+constexpr std::size_t kMaxJsonDepth = 32;
+constexpr std::size_t kMaxJsonValues = 100'000;
 constexpr int kProjectedImageSide = 128;  // slides and beams from files: 128 x 128 texels
 
 // A problem in the file: the JSON path of the field ("objects[2].mesh.shape"; empty for the
@@ -194,9 +199,57 @@ class DuplicateKeyFinder {
   }
 };
 
+// A first pass over the text that keeps nothing: it counts nesting and values and stops at the
+// first one over the budget. Syntax errors are left to the second pass, which names them; up to
+// one, that pass reads no more values than this one did.
+class BudgetCheck : public nlohmann::json_sax<json> {
+ public:
+  std::string problem;  // empty: within the budget
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t &) override { return value(); }
+  bool string(string_t &) override { return value(); }
+  bool binary(binary_t &) override { return value(); }
+  bool key(string_t &) override { return value(); }
+  bool start_object(std::size_t) override { return open(); }
+  bool start_array(std::size_t) override { return open(); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string &, const nlohmann::detail::exception &) override {
+    return false;
+  }
+
+ private:
+  std::size_t depth_ = 0, values_ = 0;
+  bool value() {
+    if (++values_ <= kMaxJsonValues) return true;
+    problem = "more than " + std::to_string(kMaxJsonValues) +
+              " JSON values (keys, numbers, strings, arrays and objects), the limit";
+    return false;
+  }
+  bool open() {
+    if (++depth_ > kMaxJsonDepth) {
+      problem = "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) +
+                " deep, the limit";
+      return false;
+    }
+    return value();
+  }
+  bool close() {
+    --depth_;
+    return true;
+  }
+};
+
 json parse_file(const std::string &path) {
   std::string contents, error;
   if (!read_input_file(path, kMaxSceneFileBytes, contents, error)) throw SceneError{{}, error};
+  BudgetCheck budget;
+  json::sax_parse(contents, &budget);
+  if (!budget.problem.empty()) throw SceneError{{}, budget.problem};
   DuplicateKeyFinder duplicates;
   json document;
   try {

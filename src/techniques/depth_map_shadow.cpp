@@ -5,6 +5,8 @@
 #include "techniques/depth_map_shadow.h"
 
 #include "techniques/gl_api.h"
+#include "techniques/gl_beam_mask.h"
+#include "techniques/light_beam.h"
 #include "techniques/gl_light_units.h"
 #include "scene/lighting.h"
 #include "techniques/projection.h"
@@ -25,6 +27,9 @@ namespace gs {
 namespace {
 
 constexpr float kWidestCone = 179.0f;  // degrees; wider, the square frustum degenerates
+// Map sides refused: under 32 texels a map cannot resolve a caster (at 1 the whole cone is one
+// sample), and GL's depth textures stop at 4096 here.
+constexpr int kSmallestMap = 32, kLargestMap = 4096;
 // The q gate: unit 1 looks up s = kGateSlope * q in a two-texel step texture (0 then 1), so a
 // fragment gets the light only where q > 0.5 / kGateSlope (50 um in front of the light's
 // plane). Behind the light s/q, t/q and r/q would land back in the map (back projection).
@@ -59,9 +64,10 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
   return meshes;
 }
 
-// A light's frustum: square, its full angle the cone's (the beam's circle is inscribed), near
-// and far fitted to the scene: far beyond every vertex, near before every caster's vertex in
-// front of the light. A receiver nearer than that has r < 0, which compares as lit.
+// A light's frustum: along the light's axis, across the part of the cone's square (the beam's
+// circle inscribed) that the casters inside the beam cover, near and far fitted to the scene:
+// far beyond every vertex, near before every caster's vertex in front of the light. A receiver
+// nearer than that has r < 0, which compares as lit.
 struct LightFrustum {
   glm::mat4 view{1.0f};        // world to light view
   glm::mat4 projection{1.0f};  // light view to light clip
@@ -69,7 +75,7 @@ struct LightFrustum {
 };
 
 LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotLight &light,
-                               std::size_t index) {
+                               std::size_t index, int side) {
   LightFrustum frustum;
   const std::string name = "light " + std::to_string(index);
   if (!(light.cone_degrees > 0.0f && light.cone_degrees < kWidestCone)) {
@@ -100,15 +106,43 @@ LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotL
   // no caster the map stays empty and any near plane will do.)
   const float far_plane = std::max(farthest, 1e-3f) * 1.01f;
   const float near_plane = std::clamp(nearest_caster * 0.99f, far_plane * 1e-3f, far_plane * 0.5f);
-  frustum.projection =
-      glm::perspective(glm::radians(light.cone_degrees), 1.0f, near_plane, far_plane);
+  // The map holds only what can shadow a point the light shines on: the casters clipped to the
+  // beam (light_beam.h), seen along the light's own axis (so q is the light's depth, and the q
+  // gate and the beam stay where they are). Their box of directions, plus two texels for the
+  // percentage-closer lookup's reach, is usually far narrower than the cone, and every texel
+  // finer; a receiver outside it lies on no ray through a caster, and the lit border says so.
+  const float t = std::tan(glm::radians(light.cone_degrees) * 0.5f);
+  glm::vec2 low(-t), high(t);  // tangents x / -z, y / -z
+  const LightBeam beam = light_beam(light);
+  glm::vec2 box_low(INFINITY), box_high(-INFINITY);
+  for (const WorldMesh &mesh : meshes) {
+    if (!mesh.object->casts_shadow) continue;
+    bool whole = false;
+    for (const glm::vec3 &p : clip_to_beam(mesh.position, mesh.object->mesh.triangles, beam,
+                                           far_plane * 1e-4f, whole)) {
+      const glm::vec3 v = glm::vec3(frustum.view * glm::vec4(p, 1.0f));
+      if (!(-v.z > 0.0f)) continue;
+      const glm::vec2 tangent = glm::vec2(v.x, v.y) / -v.z;
+      box_low = glm::min(box_low, tangent);
+      box_high = glm::max(box_high, tangent);
+    }
+  }
+  if (box_low.x <= box_high.x && box_low.y <= box_high.y) {
+    const glm::vec2 width = glm::max(box_high - box_low, glm::vec2(t * 1e-4f));
+    const glm::vec2 pad =
+        width * (2.0f / std::max(static_cast<float>(side) - 4.0f, 1.0f)) + glm::vec2(t * 1e-6f);
+    low = glm::max(box_low - pad, low);
+    high = glm::min(box_high + pad, high);
+  }
+  frustum.projection = glm::frustum(low.x * near_plane, high.x * near_plane, low.y * near_plane,
+                                    high.y * near_plane, near_plane, far_plane);
   return frustum;
 }
 
-// Whether `light` reaches a vertex at all (inside its cone, the surface facing it): where the
-// mask may say the depth map took it away.
-bool reaches(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
-  return spot_factor(light, world) > 0.0f && glm::dot(normal, light.position - world) > 0.0f;
+// Whether a vertex's surface faces `light`: where the mask may say the depth map took it away
+// (whether the point is in the light's beam is decided per pixel, by GlBeamMask).
+bool faces(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
+  return glm::dot(normal, light.position - world) > 0.0f;
 }
 
 // The GL objects and passes of one frame. Textures and framebuffer are made and deleted with
@@ -120,7 +154,8 @@ class Passes {
   Passes(const Passes &) = delete;
   Passes &operator=(const Passes &) = delete;
 
-  void depth_from_lights(std::vector<std::string> &warnings);  // step 1
+  // Step 1; a light left without its map is an error (it casts no shadow).
+  void depth_from_lights(std::vector<std::string> &warnings, std::vector<std::string> &errors);
   void ambient_pass();                                         // step 2
   void lit_passes();                                           // step 3
   // The mask over the frame's depth buffer (after steps 1-3 of the same scene).
@@ -173,7 +208,8 @@ Passes::~Passes() {
   if (framebuffer_ != 0) gl_.glDeleteFramebuffers(1, &framebuffer_);
 }
 
-void Passes::depth_from_lights(std::vector<std::string> &warnings) {
+void Passes::depth_from_lights(std::vector<std::string> &warnings,
+                               std::vector<std::string> &errors) {
   gl_.glGenFramebuffers(1, &framebuffer_);
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   gl_.glDrawBuffer(GL_NONE);
@@ -199,14 +235,23 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
       frustums_.emplace_back();
       continue;
     }
-    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light));
-    const LightFrustum &frustum = frustums_.back();
-    if (!frustum.problem.empty()) {
-      warnings.push_back(frustum.problem);
-      continue;
-    }
     const GLsizei side =
         options_.projected.size > 0 ? options_.projected.size : scene_.lights[light].shadow_size;
+    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light, side));
+    const LightFrustum &frustum = frustums_.back();
+    if (side < kSmallestMap || side > kLargestMap) {
+      errors.push_back("depth-map: a map of " + std::to_string(side) + " texels for light " +
+                       std::to_string(light) + " is outside " + std::to_string(kSmallestMap) +
+                       ".." + std::to_string(kLargestMap) + ", so the light casts no shadow");
+      warnings.push_back(errors.back());
+      maps_.back() = 0;
+      continue;
+    }
+    if (!frustum.problem.empty()) {
+      warnings.push_back(frustum.problem);
+      errors.push_back(frustum.problem);
+      continue;
+    }
     GLuint map = 0;
     gl_.glGenTextures(1, &map);
     gl_.glBindTexture(GL_TEXTURE_2D, map);
@@ -225,8 +270,9 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings) {
     gl_.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
     if (gl_.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       const std::string size = std::to_string(side);
-      warnings.push_back("light " + std::to_string(light) + ": a " + size + "x" + size +
-                         " depth texture cannot be rendered to, so the light casts no shadow");
+      errors.push_back("light " + std::to_string(light) + ": a " + size + "x" + size +
+                       " depth texture cannot be rendered to, so the light casts no shadow");
+      warnings.push_back(errors.back());
       gl_.glDeleteTextures(1, &map);
       continue;
     }
@@ -343,16 +389,19 @@ void Passes::mask_passes() {
   gl_.glClear(GL_COLOR_BUFFER_BIT);  // colour only: the depth buffer keeps the frame's surfaces
   gl_.glDepthFunc(GL_EQUAL);
   gl_.glDepthMask(GL_FALSE);
-  // White where alpha = (light reaches the vertices) x (shadowed fraction) x (q gate) is over
-  // 2/255, half of 565's finest step: llvmpipe's percentage-closer lookup now and then reads an
-  // unshadowed point as a few thousandths shadowed (measured: under 1/256), which darkens nothing.
+  // White where alpha = (the surface faces the light, per vertex) x (the shadowed fraction of the
+  // percentage-closer lookup) x (q gate) x (the beam's footprint, per pixel) is at least 1/2:
+  // the one definition of shadow (technique.h), at least half of the light's view blocked where
+  // the light shines.
   gl_.glEnable(GL_ALPHA_TEST);
-  gl_.glAlphaFunc(GL_GREATER, 2.0f / 255.0f);
+  gl_.glAlphaFunc(GL_GEQUAL, 0.5f);
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     if (scene_.lights[light].is_projector()) continue;
     if (maps_[light] == 0) continue;
     const SpotLight &spot = scene_.lights[light];
+    GlBeamMask footprint(gl_, spot, 2);
     bind_shadow_units(light, GL_GREATER);  // the comparison inverted: 1 where in shadow
+    footprint.bind();
     gl_.glActiveTexture(GL_TEXTURE0);
     gl_.glEnable(GL_TEXTURE_2D);
     for (const WorldMesh &mesh : meshes_) {
@@ -360,10 +409,11 @@ void Passes::mask_passes() {
       std::vector<glm::vec4> colors;
       for (std::size_t i = 0; i < mesh.position.size(); ++i) {
         colors.emplace_back(1.0f, 1.0f, 1.0f,
-                            reaches(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
+                            faces(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
       }
       draw(mesh, colors);
     }
+    footprint.release();
   }
   release_shadow_units();
   gl_.glDisable(GL_ALPHA_TEST);
@@ -374,6 +424,7 @@ void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
   // unit 0 is left disabled, so it lights without shadows.
   const LightFrustum &frustum = frustums_[light];
   const glm::mat4 light_clip = frustum.projection * frustum.view;  // world to light clip
+  // (q, its w, is the light-view depth along the light's own axis, as the gate needs.)
   // S: light clip to texture coordinates, s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.
   const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
                          glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
@@ -443,7 +494,10 @@ class DepthMapShadow final : public ShadowTechnique {
     FrameReport report;
     const auto frame_start = Clock::now();
     GlApi gl;
-    if (!begin(gl, report.warnings)) return report;
+    if (!begin(gl, report.warnings)) {
+      report.errors = report.warnings;  // no shadow at all
+      return report;
+    }
     {
       Passes passes(gl, scene, options_);
       auto step = [&](const char *name, auto &&pass) {
@@ -452,7 +506,8 @@ class DepthMapShadow final : public ShadowTechnique {
         if (synchronous) gl.glFinish();
         report.steps.emplace_back(name, elapsed_ms(start));
       };
-      step("1 depth from the light", [&] { passes.depth_from_lights(report.warnings); });
+      step("1 depth from the light",
+           [&] { passes.depth_from_lights(report.warnings, report.errors); });
       step("2 ambient pass", [&] { passes.ambient_pass(); });
       step("3 lit pass with the depth test", [&] { passes.lit_passes(); });
     }
@@ -469,7 +524,7 @@ class DepthMapShadow final : public ShadowTechnique {
     {
       // The maps are made again rather than kept from render: no GL object outlives a call.
       Passes passes(gl, scene, options_);
-      passes.depth_from_lights(ignored);
+      passes.depth_from_lights(ignored, ignored);
       passes.mask_passes();
     }
     glideShimEndGL();

@@ -4,6 +4,8 @@
 #include "techniques/planar_shadow.h"
 
 #include "scene/lighting.h"
+#include "techniques/light_beam.h"
+#include "techniques/stencil_volume_shadow.h"
 #include "techniques/projection.h"
 #include "techniques/scene_pass.h"
 
@@ -15,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 namespace gs {
 namespace {
@@ -95,6 +98,7 @@ struct ReceiverTriangle {
   std::array<glm::vec3, 3> inward;  // world, in the plane: into the triangle from edge i, i+1
   std::array<float, 3> inward_offset{};
   DirectionBox box;
+  bool beyond_beam = false;         // not wholly inside the light's inner beam: clip to it
 };
 
 struct Receiver {
@@ -110,33 +114,49 @@ Caster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &li
   const LitVertices lit = light_vertices(mesh, object.model_to_world, light_view);
   Caster caster;
   caster.object = index;
+  // A closed caster's light-facing triangles cover its whole shadow, so the others are culled
+  // (the article's "lightface-culled"). An open one (a tube, a sheet) may show the light only
+  // its back faces: those cast too, turned to face the light.
+  const bool closed = build_edge_mesh(mesh).closed;
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 &a = lit.world[t.x], &b = lit.world[t.y], &c = lit.world[t.z];
-    if (!faces(light.position, a, b, c)) continue;  // the article's "lightface-culled"
+    const bool facing = faces(light.position, a, b, c);
+    if (!facing && (closed || !faces(light.position, a, c, b))) continue;
     // Wholly behind the light's view plane: its shadow goes away from every receiver in the cone.
     if (!lit.in_front[t.x] && !lit.in_front[t.y] && !lit.in_front[t.z]) continue;
-    caster.triangles.push_back({{a, b, c}, triangle_box(lit, t)});
+    if (facing) {
+      caster.triangles.push_back({{a, b, c}, triangle_box(lit, t)});
+    } else {
+      caster.triangles.push_back({{a, c, b}, triangle_box(lit, t)});
+    }
     caster.box.include(caster.triangles.back().box);
   }
   return caster;
 }
 
-Receiver prepare_receiver(const Scene &scene, std::size_t index, const SpotLight &light,
-                          const glm::mat4 &light_view) {
+Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam &beam,
+                          const SpotLight &light, const glm::mat4 &light_view) {
   const SceneObject &object = scene.objects[index];
   const LitVertices lit = light_vertices(object.mesh, object.model_to_world, light_view);
-  std::vector<bool> in_cone(lit.world.size());
+  // Per vertex: inside the inner beam for sure, and which outer planes it lies beyond (a
+  // triangle wholly beyond one of them is out of the light's reach).
+  std::vector<bool> inside(lit.world.size());
+  std::vector<std::uint64_t> beyond(lit.world.size(), 0);
   for (std::size_t i = 0; i < lit.world.size(); ++i) {
-    in_cone[i] = spot_factor(light, lit.world[i]) > 0.0f;
+    inside[i] = beam.surely_inside(lit.world[i]);
+    if (inside[i]) continue;
+    for (std::size_t p = 0; p < beam.outer.size() && p < 64; ++p) {
+      if (glm::dot(beam.outer[p], glm::vec4(lit.world[i], 1.0f)) < 0.0f) beyond[i] |= 1ull << p;
+    }
   }
   Receiver receiver;
   receiver.object = index;
   for (std::size_t k = 0; k < object.mesh.triangles.size(); ++k) {
     const glm::uvec3 &t = object.mesh.triangles[k];
-    // Lighting is per vertex (Gouraud): with the light's factor zero at all three corners it
-    // adds nothing anywhere on the triangle, so there is nothing for a shadow to take away.
-    if (!in_cone[t.x] && !in_cone[t.y] && !in_cone[t.z]) continue;
+    // The light does not shine on it anywhere: no shadow to cast on it.
+    if ((beyond[t.x] & beyond[t.y] & beyond[t.z]) != 0) continue;
     ReceiverTriangle r;
+    r.beyond_beam = !(inside[t.x] && inside[t.y] && inside[t.z]);
     r.index = static_cast<std::uint32_t>(k);
     r.corner = {lit.world[t.x], lit.world[t.y], lit.world[t.z]};
     const glm::vec3 cross = glm::cross(r.corner[1] - r.corner[0], r.corner[2] - r.corner[0]);
@@ -159,9 +179,10 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const SpotLight
   return receiver;
 }
 
-// A convex polygon during clipping: a triangle cut by five planes has at most eight corners.
+// A convex polygon during clipping: a triangle cut by five planes has at most eight corners, and
+// the beam region's planes (at most kConeSides and a gobo's two bars) add one each.
 struct SmallPolygon {
-  std::array<glm::vec3, 12> v;
+  std::array<glm::vec3, 10 + kConeSides> v;
   std::size_t n = 0;
 };
 
@@ -172,7 +193,12 @@ void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, Sma
     const glm::vec3 &a = polygon.v[i], &b = polygon.v[(i + 1) % polygon.n];
     const float da = glm::dot(normal, a) - offset, db = glm::dot(normal, b) - offset;
     if (da >= 0.0f) scratch.v[scratch.n++] = a;
-    if ((da >= 0.0f) != (db >= 0.0f)) scratch.v[scratch.n++] = a + (b - a) * (da / (da - db));
+    if ((da >= 0.0f) != (db >= 0.0f)) {
+      // From the same end whichever way the edge is walked: neighbours sharing it meet exactly.
+      const bool forward = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+      scratch.v[scratch.n++] = forward ? a + (b - a) * (da / (da - db))
+                                       : b + (a - b) * (db / (db - da));
+    }
   }
   std::swap(polygon, scratch);
 }
@@ -181,8 +207,8 @@ void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, Sma
 // between the receiver's plane and the light's height above it, projected from the light onto
 // the plane, and clipped against the receiver's three edges within the plane.
 void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
-             const glm::vec3 &light, const std::array<float, 3> &height, SmallPolygon &polygon,
-             SmallPolygon &scratch) {
+             const glm::vec3 &light, const std::array<float, 3> &height,
+             const std::vector<glm::vec4> &beam, SmallPolygon &polygon, SmallPolygon &scratch) {
   const float top = receiver.light_height * kNearLightHeight;
   polygon.n = 3;
   std::copy(caster.corner.begin(), caster.corner.end(), polygon.v.begin());
@@ -200,6 +226,12 @@ void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
   }
   for (std::size_t e = 0; e < 3 && polygon.n >= 3; ++e) {
     clip_keep(polygon, receiver.inward[e], receiver.inward_offset[e], scratch);
+  }
+  // Only where the light shines (light_beam.h): the beam's inner planes, on the receiver.
+  if (!receiver.beyond_beam) return;
+  for (const glm::vec4 &plane : beam) {
+    if (polygon.n < 3) break;
+    clip_keep(polygon, glm::vec3(plane), -plane.w, scratch);
   }
 }
 
@@ -220,12 +252,13 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
     const SpotLight &light = scene.lights[l];
     if (light.is_projector()) continue;  // slides cast no shadows
     const glm::mat4 light_view = light_view_matrix(light);
+    const LightBeam beam = light_beam(light);
     std::vector<Caster> casters;
     std::vector<Receiver> receivers;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       if (scene.objects[i].casts_shadow) casters.push_back(prepare_caster(scene, i, light, light_view));
       if (scene.objects[i].receives_shadow) {
-        receivers.push_back(prepare_receiver(scene, i, light, light_view));
+        receivers.push_back(prepare_receiver(scene, i, beam, light, light_view));
       }
     }
     ShadowPolygons &out = result.lights[l];
@@ -249,13 +282,17 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
               continue;
             }
             ++result.pairs_clipped;
-            cast_on(c, r, light.position, height, polygon, scratch);
-            if (polygon.n < 3) continue;
-            out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
-                                    static_cast<std::uint32_t>(polygon.n),
-                                    static_cast<std::uint32_t>(receiver.object), r.index});
-            out.vertices.insert(out.vertices.end(), polygon.v.begin(),
-                                polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+            // Beyond the beam's sure inside: one polygon per lit region (light_beam.h).
+            const std::size_t pieces = r.beyond_beam ? beam.regions.size() : 1;
+            for (std::size_t piece = 0; piece < pieces; ++piece) {
+              cast_on(c, r, light.position, height, beam.regions[piece], polygon, scratch);
+              if (polygon.n < 3) continue;
+              out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
+                                      static_cast<std::uint32_t>(polygon.n),
+                                      static_cast<std::uint32_t>(receiver.object), r.index});
+              out.vertices.insert(out.vertices.end(), polygon.v.begin(),
+                                  polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+            }
           }
         }
       }
@@ -411,12 +448,13 @@ class PlanarShadow final : public ShadowTechnique {
     finish_step("3 draw the shadow polygons");
     report.total_ms = elapsed_ms(frame_start);
     if (shadows_.pairs_skipped > 0) {
-      report.warnings.push_back(
+      report.errors.push_back(
           "planar: " + std::to_string(shadows_.pairs_skipped) +
           " caster/receiver triangle pairs beyond the limit of " +
           std::to_string(kMaxClippedPairs) +
           " per frame were not clipped, so part of the shadows is missing (fewer caster "
           "triangles, e.g. a simpler shadow_mesh, bring it under the limit)");
+      report.warnings.push_back(report.errors.back());
     }
     return report;
   }

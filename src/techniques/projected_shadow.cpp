@@ -4,6 +4,9 @@
 // (s, t in 0..256 across the shadow texture).
 #include "techniques/projected_shadow.h"
 
+#include "techniques/light_beam.h"
+#include "techniques/stencil_volume_shadow.h"
+
 #include <glide_shim.h>
 #include <glideutl.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -106,11 +109,53 @@ double elapsed_ms(Clock::time_point start) {
 
 }  // namespace
 
+namespace {
+
+constexpr float kWidestHalfView = 80.0f * 3.14159265f / 180.0f;  // beyond, texels stretch 30 times
+
+glm::vec3 up_for(const glm::vec3 &axis) {
+  return std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+}
+
+// The caster's triangles (world) clipped to the beam's outer pyramid and a plane `margin` in front
+// of the light (light_beam.h): every point of the caster that can shadow anything the light
+// reaches. `whole` says whether nothing was cut off.
+std::vector<glm::vec3> caster_in_beam(const SceneObject &object, const LightBeam &beam,
+                                      float margin, bool &whole) {
+  const Mesh &mesh = caster_mesh(object);
+  std::vector<glm::vec3> world(mesh.positions.size());
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    world[i] = glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+  }
+  return clip_to_beam(world, mesh.triangles, beam, margin, whole);
+}
+
+// The smallest square view from `position` along `axis` that holds every point: the largest
+// tangent |x| / -z or |y| / -z; infinite when a point is not in front of the light.
+float widest_tangent(const glm::vec3 &position, const glm::vec3 &axis,
+                     const std::vector<glm::vec3> &points, float &front, float &back) {
+  const glm::mat4 view = glm::lookAt(position, position + axis, up_for(axis));
+  float widest = 0.0f;
+  front = INFINITY, back = 0.0f;
+  for (const glm::vec3 &p : points) {
+    const glm::vec3 v = glm::vec3(view * glm::vec4(p, 1.0f));
+    if (!(-v.z > 0.0f)) return INFINITY;
+    widest = std::max(widest, std::max(std::abs(v.x), std::abs(v.y)) / -v.z);
+    front = std::min(front, -v.z);
+    back = std::max(back, -v.z);
+  }
+  return widest;
+}
+
+}  // namespace
+
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light_index,
                          const ProjectedShadowOptions &options) {
   const SceneObject &object = scene.objects[caster];
   const SpotLight &light = scene.lights[light_index];
   const Sphere sphere = caster_bounds(object);
+  const std::string names =
+      "light " + std::to_string(light_index) + " and '" + object.name + "'";
   LightView view;
   view.position = light.position;
   view.size = options.auto_size  ? screen_size_texture(scene, sphere)
@@ -118,30 +163,86 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
                                  : light.shadow_size;
   if (view.size < 32 || view.size > 512 || (view.size & (view.size - 1)) != 0) {
     view.problem = "shadow size " + std::to_string(view.size) + " for light " +
-                   std::to_string(light_index) + " is not a power of two in 32..512";
+                   std::to_string(light_index) + " is not a power of two in 32..512, so '" +
+                   object.name + "' casts no shadow from it";
+    return view;
+  }
+  const LightBeam beam = light_beam(light);
+  view.beam = beam;
+  // The view keeps `border_texels` (plus one for the 1/16-pixel snap and bilinear's reach) clean
+  // on every side: the Figure 12/13 bug cannot occur.
+  const float usable = 1.0f - 2.0f * static_cast<float>(options.border_texels + 1) /
+                                  static_cast<float>(view.size);
+  const float reach = glm::length(sphere.centre - light.position) + sphere.radius;
+  bool whole = false;
+  const std::vector<glm::vec3> points =
+      caster_in_beam(object, beam, std::max(reach, 1e-6f) * 1e-4f, whole);
+  if (points.empty()) {
+    view.outside_beam = true;  // its shadow would fall where the light does not shine
     return view;
   }
   view.caster_distance = glm::length(sphere.centre - light.position);
-  // The view is fitted so the caster's bounding sphere leaves `border_texels` (plus one for the
-  // 1/16-pixel snap and bilinear's reach) clean on every side: the Figure 12/13 bug cannot occur.
-  const float usable = 1.0f - 2.0f * static_cast<float>(options.border_texels + 1) /
-                                  static_cast<float>(view.size);
   const float sine = sphere.radius / std::max(view.caster_distance, 1e-6f);
-  const float half_fov = sine < 1.0f ? std::atan(std::tan(std::asin(sine)) / usable) : INFINITY;
-  if (!(half_fov < glm::radians(80.0f))) {
-    view.problem = "light " + std::to_string(light_index) + " is too close to '" + object.name +
-                   "' (" + std::to_string(view.caster_distance) + " m from a caster of radius " +
-                   std::to_string(sphere.radius) +
-                   " m): no view keeps a clean border, so it casts no shadow";
+  const float sphere_half = sine < 1.0f ? std::atan(std::tan(std::asin(sine)) / usable) : INFINITY;
+  if (whole && sphere_half < kWidestHalfView) {
+    // The article's view: the whole caster is in the beam, and its bounding sphere fits.
+    view.view = glm::lookAt(light.position, sphere.centre,
+                            up_for(glm::normalize(sphere.centre - light.position)));
+    view.caster_front = view.caster_distance - sphere.radius;
+    const float near_plane = std::max(view.caster_front * 0.5f, 1e-3f);
+    view.projection = glm::perspective(2.0f * sphere_half, 1.0f, near_plane,
+                                       view.caster_distance + sphere.radius * 1.01f);
+    view.usable = true;
     return view;
   }
-  const glm::vec3 axis = glm::normalize(sphere.centre - light.position);
-  const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  view.view = glm::lookAt(light.position, sphere.centre, up);
-  view.caster_front = view.caster_distance - sphere.radius;
-  const float near_plane = std::max(view.caster_front * 0.5f, 1e-3f);
-  view.projection = glm::perspective(2.0f * half_fov, 1.0f, near_plane,
-                                     view.caster_distance + sphere.radius * 1.01f);
+  // What the beam holds of the caster, seen along the axis of (about) the narrowest cone around
+  // it: the directions' mean moved towards the farthest one with shrinking steps (Badoiu and
+  // Clarkson's core-set iteration), or the light's own axis if that is narrower.
+  std::vector<glm::vec3> directions;
+  directions.reserve(points.size());
+  glm::vec3 sum(0.0f);
+  for (const glm::vec3 &p : points) {
+    const glm::vec3 d = p - light.position;
+    const float length = glm::length(d);
+    if (length > 0.0f) directions.push_back(d / length), sum += directions.back();
+  }
+  glm::vec3 axis = glm::length(sum) > 1e-6f ? glm::normalize(sum) : beam.axis;
+  for (int step = 1; step <= 64 && !directions.empty(); ++step) {
+    const glm::vec3 *farthest = &directions.front();
+    for (const glm::vec3 &d : directions) {
+      if (glm::dot(d, axis) < glm::dot(*farthest, axis)) farthest = &d;
+    }
+    const glm::vec3 moved = axis + (*farthest - axis) / static_cast<float>(step + 1);
+    if (!(glm::length(moved) > 1e-6f)) break;
+    axis = glm::normalize(moved);
+  }
+  float front = 0.0f, back = 0.0f, front_axis = 0.0f, back_axis = 0.0f;
+  float widest = widest_tangent(light.position, axis, points, front, back);
+  const float widest_axis = widest_tangent(light.position, beam.axis, points, front_axis, back_axis);
+  if (widest_axis < widest) widest = widest_axis, axis = beam.axis, front = front_axis, back = back_axis;
+  const float half_view = std::atan(widest / usable);
+  if (!(half_view < kWidestHalfView)) {
+    view.problem =
+        names + ": no single projection holds the caster as the light sees it (it would need a " +
+        (std::isfinite(half_view) ? std::to_string(static_cast<int>(std::ceil(glm::degrees(2.0f * half_view)))) +
+                                        " degree"
+                                  : std::string("more than 180 degree")) +
+        " view, the widest is " + std::to_string(static_cast<int>(glm::degrees(2.0f * kWidestHalfView))) +
+        "), so it casts no shadow from this light";
+    return view;
+  }
+  view.view = glm::lookAt(light.position, light.position + axis, up_for(axis));
+  view.caster_front = front;
+  view.caster_distance = 0.5f * (front + back);
+  const float near_plane = std::max(front * 0.5f, back * 1e-5f);
+  view.projection = glm::perspective(2.0f * half_view, 1.0f, near_plane, back * 1.01f);
+  // Step 1 draws only what lies inside the clean border and in front of the near plane: the rest
+  // of the caster is outside the beam, and drawn it would soil the border that clamping repeats.
+  for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, usable), glm::vec4(1, 0, 0, usable),
+                                glm::vec4(0, -1, 0, usable), glm::vec4(0, 1, 0, usable),
+                                glm::vec4(0, 0, 1, 1)}) {
+    view.caster_planes.push_back(glm::transpose(view.projection) * side);
+  }
   view.usable = true;
   return view;
 }
@@ -180,7 +281,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
                 std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
                 "memory directly";
   }
-  // The flat render: 565 red 11110b on 0, no depth test, back faces culled.
+  // The flat render: 565 red 11110b on 0, no depth test, back faces culled (closed casters).
   if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, lod_for(view.size))) {
     view.usable = false;
     view.problem = std::string("step 1 cannot render into texture memory: ") +
@@ -194,31 +295,39 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
-  grCullMode(GR_CULL_POSITIVE);
+  // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
+  // sheet) may show the light only its back, so it is drawn from both sides.
+  grCullMode(build_edge_mesh(caster_mesh(object)).closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
   grBufferClear(0, 0, 0);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grConstantColorValue(kShadowRedArgb);
-  const glm::mat4 light_clip = view.projection * view.view * object.model_to_world;
+  const glm::mat4 to_view = view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> screen(mesh.positions.size());
   std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
+  std::vector<glm::vec4> in_view(mesh.positions.size());
+  std::vector<bool> inside(mesh.positions.size(), true);
   for (std::size_t i = 0; i < screen.size(); ++i) {
-    const glm::vec4 clip = light_clip * glm::vec4(mesh.positions[i], 1.0f);
-    screen[i] = to_screen(clip, view.size, view.size);
+    in_view[i] = to_view * glm::vec4(mesh.positions[i], 1.0f);
+    for (const glm::vec4 &plane : view.caster_planes) {
+      if (glm::dot(plane, in_view[i]) < 0.0f) inside[i] = false;
+    }
+    const glm::vec4 clip = view.projection * in_view[i];
+    if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
     depth[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
   auto cell_index = [&](float texels) {
     return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
   };
-  for (const glm::uvec3 &t : mesh.triangles) {
-    guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
-    const float x0 = std::min({screen[t.x].x, screen[t.y].x, screen[t.z].x});
-    const float x1 = std::max({screen[t.x].x, screen[t.y].x, screen[t.z].x});
-    const float y0 = std::min({screen[t.x].y, screen[t.y].y, screen[t.z].y});
-    const float y1 = std::max({screen[t.x].y, screen[t.y].y, screen[t.z].y});
-    const float nearest = std::min({depth[t.x], depth[t.y], depth[t.z]});
+  // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.
+  auto occupy = [&](const GrVertex *const *corners, std::size_t count, float nearest) {
+    float x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (std::size_t k = 0; k < count; ++k) {
+      x0 = std::min(x0, corners[k]->x), x1 = std::max(x1, corners[k]->x);
+      y0 = std::min(y0, corners[k]->y), y1 = std::max(y1, corners[k]->y);
+    }
     for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
       for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
         const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
@@ -226,6 +335,36 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
         view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
       }
     }
+  };
+  std::vector<ClipVertex> polygon, scratch;
+  std::vector<GrVertex> fan;
+  std::vector<const GrVertex *> corners;
+  for (const glm::uvec3 &t : mesh.triangles) {
+    if (inside[t.x] && inside[t.y] && inside[t.z]) {
+      guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
+      const GrVertex *const triangle[3] = {&screen[t.x], &screen[t.y], &screen[t.z]};
+      occupy(triangle, 3, std::min({depth[t.x], depth[t.y], depth[t.z]}));
+      continue;
+    }
+    // Partly outside the beam's view: only the part inside is drawn.
+    polygon.clear();
+    for (unsigned i : {t.x, t.y, t.z}) polygon.push_back({in_view[i], {}, {}});
+    for (const glm::vec4 &plane : view.caster_planes) {
+      clip_polygon(polygon, plane, scratch);
+      if (polygon.size() < 3) break;
+    }
+    if (polygon.size() < 3) continue;
+    fan.clear();
+    corners.clear();
+    float nearest = INFINITY;
+    for (const ClipVertex &v : polygon) {
+      const glm::vec4 clip = view.projection * v.clip;
+      fan.push_back(to_screen(clip, view.size, view.size));
+      nearest = std::min(nearest, clip.w);
+    }
+    for (const GrVertex &v : fan) corners.push_back(&v);
+    draw_fan(fan);
+    occupy(corners.data(), corners.size(), nearest);
   }
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
@@ -266,6 +405,16 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       view_planes.push_back(glm::transpose(view.projection) * side);
     }
   }
+  // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
+  const glm::mat4 world_from_view = glm::inverse(view.view);
+  std::vector<std::vector<glm::vec4>> beam_regions;
+  for (const std::vector<glm::vec4> &region : view.beam.regions) {
+    beam_regions.emplace_back();
+    for (const glm::vec4 &plane : region) {
+      beam_regions.back().push_back(glm::transpose(world_from_view) * plane);
+    }
+  }
+  const LightBeam &beam = view.beam;
   std::vector<ClipVertex> polygon, scratch;
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
@@ -278,15 +427,18 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const glm::vec4 &p = lc[i];
       flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
                  (p.w < view.caster_front) << 4;
+      if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
     }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
-      if ((flags[t.x] & flags[t.y] & flags[t.z]) != 0) continue;
+      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
       const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
       const bool in_front = (any_outside & 0x10) != 0;
-      const bool needs_clip = in_front || (view.clip_to_view && (any_outside & 0xF) != 0);
+      const bool beyond_beam = (any_outside & 0x20) != 0;
+      const bool needs_clip =
+          in_front || beyond_beam || (view.clip_to_view && (any_outside & 0xF) != 0);
       if (!needs_clip) {
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         if (!sees_caster(view, corners, 3)) continue;
@@ -312,15 +464,27 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         if (polygon.size() < 3) break;
       }
       if (polygon.size() < 3) continue;
-      std::vector<glm::vec4> corners;
-      for (const ClipVertex &v : polygon) corners.push_back(view.projection * v.clip);
-      if (!sees_caster(view, corners.data(), corners.size())) continue;
-      std::vector<GrVertex> screen;
-      project_camera_polygon(frame, scene, polygon, scratch, screen);
-      for (std::size_t i = 0; i < screen.size(); ++i) {
-        set_texture_fields(screen[i], view, light, polygon[i].world, options);
+      // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
+      const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
+      for (std::size_t piece = 0; piece < pieces; ++piece) {
+        std::vector<ClipVertex> part = polygon;
+        if (beyond_beam) {
+          for (const glm::vec4 &plane : beam_regions[piece]) {
+            if (part.size() < 3) break;
+            clip_polygon(part, plane, scratch);
+          }
+        }
+        if (part.size() < 3) continue;
+        std::vector<glm::vec4> corners;
+        for (const ClipVertex &v : part) corners.push_back(view.projection * v.clip);
+        if (!sees_caster(view, corners.data(), corners.size())) continue;
+        std::vector<GrVertex> screen;
+        project_camera_polygon(frame, scene, part, scratch, screen);
+        for (std::size_t i = 0; i < screen.size(); ++i) {
+          set_texture_fields(screen[i], view, light, part[i].world, options);
+        }
+        if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
       }
-      if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
     }
   }
   return coords;
@@ -355,15 +519,30 @@ void set_shadow_pass_state(const ShadowTexture &texture, const ProjectedShadowOp
   }
 }
 
-void draw_receivers(const ReceiverCoords &receivers) {
+// Step 5's depth levels, in W-buffer codes nearer than step 4's surfaces (grDepthBiasLevel; 4096
+// codes an octave of w, on the Voodoo and in the shim). Each pixel is darkened once per light,
+// however many of its casters' shadows overlap there: every pass that darkens also marks the
+// pixels it darkened in the depth buffer (nearer), and the next shadow of the same light fails
+// the depth test there (GR_CMP_LESS).
+//   - Exact triangles (step 4's own screen vertices) darken and mark in one pass at kExactCodes:
+//     another exact triangle at the same pixel gives the same depth, which is not less.
+//   - Clipped polygons are coplanar with what step 4 drew but not made of the same vertices, so
+//     their depth strays from it by up to 4 codes (tests/hard_cases/eye_near_plane.json): they
+//     darken at kClippedCodes, then mark kSealCodes nearer with colour writes off (a seal that
+//     every later cover on the same surface fails by more than the stray).
+// Clipped polygons are drawn first, so an exact triangle after them fails on their seals.
+constexpr FxI16 kExactCodes = 1;
+constexpr FxI16 kClippedCodes = 9;
+constexpr FxI16 kSealCodes = kClippedCodes + 16;
+
+void draw_exact(const ReceiverCoords &receivers) {
   for (const ShadowTriangle &t : receivers.triangles) {
     guDrawTriangleWithClip(&t.v[0], &t.v[1], &t.v[2]);
   }
-  // Clipped polygons are coplanar with what step 4 drew but not made of the same vertices, so
-  // they are pulled a few depth codes nearer to pass LEQUAL.
-  grDepthBiasLevel(-8);
+}
+
+void draw_clipped(const ReceiverCoords &receivers) {
   for (const std::vector<GrVertex> &polygon : receivers.clipped) draw_fan(polygon);
-  grDepthBiasLevel(0);
 }
 
 void restore_scene_state() {
@@ -374,15 +553,49 @@ void restore_scene_state() {
 
 }  // namespace
 
-void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options) {
-  set_shadow_pass_state(job.texture, options);
-  // Black, at texture alpha x iterated alpha, over the lit scene.
-  grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ZERO,
-                 GR_COMBINE_LOCAL_NONE, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
-  grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
-                       GR_BLEND_ZERO);
-  draw_receivers(job.receivers);
+namespace {
+
+// Step 5 for the shadows of one light, in order, each pixel darkened once (the depth levels
+// above). Leaves marks in the depth buffer, up to kSealCodes nearer than step 4's surfaces.
+void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
+                                const ProjectedShadowOptions &options) {
+  // Black, at texture alpha x iterated alpha, over the lit scene; marks where alpha > 0.
+  auto darken = [&](const ShadowJob &job) {
+    set_shadow_pass_state(job.texture, options);
+    grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ZERO,
+                   GR_COMBINE_LOCAL_NONE, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
+    grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
+                         GR_BLEND_ZERO);
+    grAlphaTestFunction(GR_CMP_GREATER);
+    grAlphaTestReferenceValue(0);
+    grDepthBufferFunction(GR_CMP_LESS);
+  };
+  for (const ShadowJob *job : jobs) {
+    if (job->receivers.clipped.empty()) continue;
+    darken(*job);
+    grDepthMask(FXFALSE);
+    grDepthBiasLevel(-kClippedCodes);
+    draw_clipped(job->receivers);
+    grColorMask(FXFALSE, FXFALSE);  // the seal: depth only, where the cover darkened
+    grDepthMask(FXTRUE);
+    grDepthBiasLevel(-kSealCodes);
+    draw_clipped(job->receivers);
+    grColorMask(FXTRUE, FXFALSE);
+  }
+  for (const ShadowJob *job : jobs) {
+    darken(*job);
+    grDepthMask(FXTRUE);
+    grDepthBiasLevel(-kExactCodes);
+    draw_exact(job->receivers);
+  }
+  grDepthBiasLevel(0);
   restore_scene_state();
+}
+
+}  // namespace
+
+void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options) {
+  render_light_shadow_passes({&job}, options);
 }
 
 ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOptions &options,
@@ -393,7 +606,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
     if (synchronous) grSstIdle();
     result.times.ms[step] += elapsed_ms(start);
   };
-  const FrameGeometry frame = project_scene(scene);
+  FrameGeometry frame = project_scene(scene);
   grRenderBuffer(GR_BUFFER_BACKBUFFER);
   FxU32 next_address = grTexMinAddress(GR_TMU0);
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
@@ -404,7 +617,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       const LightView fitted = fit_light_view(scene, caster, light, options);  // 1
       result.times.ms[0] += elapsed_ms(start);
       if (!fitted.usable) {
-        result.warnings.push_back(fitted.problem);
+        if (!fitted.outside_beam) result.errors.push_back(fitted.problem);
         continue;
       }
       for (LightView &part : split_into_textures(fitted)) {
@@ -413,8 +626,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
                          GR_TEXFMT_ARGB_4444, nullptr};
         if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
             grTexMaxAddress(GR_TMU0) + 8) {
-          result.warnings.push_back("TMU memory is full: '" + scene.objects[caster].name +
-                                    "' casts no shadow from light " + std::to_string(light));
+          result.errors.push_back("TMU memory is full: '" + scene.objects[caster].name +
+                                  "' casts no shadow from light " + std::to_string(light));
           break;
         }
         ShadowJob job;
@@ -425,7 +638,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
         finish_step(0, start);
         if (!job.view.usable) {
-          result.warnings.push_back(job.view.problem);
+          result.errors.push_back(job.view.problem);
           continue;
         }
         if (!job.view.note.empty() &&
@@ -450,27 +663,75 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   render_scene(scene, frame);  // 4
   finish_step(3, start);
   start = Clock::now();
-  for (const ShadowJob &job : result.jobs) render_shadow_pass(job, options);  // 5
+  // 5, a light at a time (jobs are in light order). Between lights the depth buffer gets step
+  // 4's surfaces back (a depth-only scene pass), so each light's marks start from them.
+  std::vector<const ShadowJob *> same_light;
+  for (std::size_t j = 0; j < result.jobs.size(); ++j) {
+    same_light.push_back(&result.jobs[j]);
+    if (j + 1 < result.jobs.size() && result.jobs[j + 1].light == result.jobs[j].light) continue;
+    render_light_shadow_passes(same_light, options);
+    same_light.clear();
+    if (j + 1 < result.jobs.size()) {
+      grColorMask(FXFALSE, FXFALSE);
+      render_scene(scene, frame);
+      grColorMask(FXTRUE, FXFALSE);
+    }
+  }
   finish_step(4, start);
   result.times.total_ms = elapsed_ms(frame_start);
+  result.geometry = std::move(frame);
+  // Errors are warnings too, so that a caller showing only warnings still shows them.
+  result.warnings.insert(result.warnings.begin(), result.errors.begin(), result.errors.end());
   return result;
 }
 
-void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame) {
+namespace {
+
+void draw_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame,
+               FxI16 exact_codes, FxI16 clipped_codes) {
   grDepthMask(FXFALSE);
   grBufferClear(0, 0, 0);  // colour only: the depth buffer keeps the frame's surfaces
   for (const ShadowJob &job : frame.jobs) {
     set_shadow_pass_state(job.texture, options);
-    // White wherever step 5 blended a non-zero alpha.
+    // White where the pixel is in shadow as technique.h defines it: at least half of the
+    // light's view of the point covered by the caster, i.e. the filtered texture alpha at least
+    // 128 (the chroma-key variant samples one texel: the key rejects uncovered ones, and every
+    // texel left is covered).
     grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                    GR_COMBINE_OTHER_TEXTURE, FXFALSE);
     grConstantColorValue(0xFFFFFFFFu);
     grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-    grAlphaTestFunction(GR_CMP_GREATER);
-    grAlphaTestReferenceValue(0);
-    draw_receivers(job.receivers);
+    if (options.chroma_key) {
+      grAlphaTestFunction(GR_CMP_GREATER);
+      grAlphaTestReferenceValue(0);
+    } else {
+      grAlphaCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE, GR_COMBINE_LOCAL_NONE,
+                     GR_COMBINE_OTHER_TEXTURE, FXFALSE);  // the texture's alpha alone
+      grAlphaTestFunction(GR_CMP_GEQUAL);
+      grAlphaTestReferenceValue(128);
+    }
+    grDepthBiasLevel(-exact_codes);
+    draw_exact(job.receivers);
+    grDepthBiasLevel(-clipped_codes);
+    draw_clipped(job.receivers);
+    grDepthBiasLevel(0);
   }
   restore_scene_state();
+}
+
+}  // namespace
+
+void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame) {
+  draw_mask(options, frame, kSealCodes + 8, kSealCodes + 8);
+}
+
+void render_shadow_mask(const Scene &scene, const ProjectedShadowOptions &options,
+                        const ShadowFrame &frame) {
+  grColorMask(FXFALSE, FXFALSE);
+  render_scene(scene, frame.geometry);  // step 4's depth, without step 5's marks
+  grColorMask(FXTRUE, FXFALSE);
+  // LEQUAL at step 4's depth, as step 5 would find the surfaces without marks.
+  draw_mask(options, frame, 0, 8);
 }
 
 }  // namespace gs

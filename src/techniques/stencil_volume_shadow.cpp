@@ -5,6 +5,7 @@
 #include "techniques/stencil_volume_shadow.h"
 
 #include "techniques/gl_api.h"
+#include "techniques/gl_beam_mask.h"
 #include "techniques/gl_light_units.h"
 #include "scene/lighting.h"
 #include "techniques/projection.h"
@@ -230,14 +231,6 @@ void set_frame_state(const GlApi &gl, const FrameData &frame) {
   gl.glEnableClientState(GL_COLOR_ARRAY);
 }
 
-// A scene holding only `light` and no ambient: shade_vertex then gives that light's direct term.
-Scene light_alone(const SpotLight &light) {
-  Scene scene;
-  scene.ambient = glm::vec3(0.0f);
-  scene.lights = {light};
-  return scene;
-}
-
 class StencilVolumeShadow final : public ShadowTechnique {
  public:
   explicit StencilVolumeShadow(const TechniqueOptions &options) : mode_(options.volume_mode) {}
@@ -246,7 +239,10 @@ class StencilVolumeShadow final : public ShadowTechnique {
     FrameReport report;
     const auto frame_start = Clock::now();
     double ms[3] = {};
-    if (!begin(report.warnings)) return report;
+    if (!begin(report.warnings)) {
+      report.errors = report.warnings;  // no shadow at all
+      return report;
+    }
     auto start = Clock::now();
     const auto finish_step = [&](int step) {
       if (synchronous) gl_.glFinish();
@@ -261,10 +257,10 @@ class StencilVolumeShadow final : public ShadowTechnique {
     finish_step(0);
     prepare_casters(scene, frame);  // 2
     for (const std::string &name : frame.open_casters) {
-      if (warned_.insert(name).second) {
-        report.warnings.push_back("stencil-volume: '" + name +
-                                  "' is not a closed mesh, so it casts no shadow volume");
-      }
+      // Every frame it misses a shadow (an error); the warning is given once.
+      report.errors.push_back("stencil-volume: '" + name +
+                              "' is not a closed mesh, so it casts no shadow volume");
+      if (warned_.insert(name).second) report.warnings.push_back(report.errors.back());
     }
     finish_step(1);
     std::vector<glm::vec4> volumes;
@@ -305,22 +301,24 @@ class StencilVolumeShadow final : public ShadowTechnique {
       const bool z_fail = uses_z_fail(scene, light);
       build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
-      // White where this light would reach the visible surface (alpha > 0: what it adds to a
-      // white surface, so cone and facing as in shade_vertex) but the count is not 0.
-      const Scene alone = light_alone(light);
+      // White where the count is not 0 and this light shines on the visible surface: alpha =
+      // (the surface faces the light, per vertex) x (the beam's footprint, per pixel) at least
+      // 1/2, the one definition of shadow (technique.h).
       for (Surface &surface : frame.surfaces) {
         for (std::size_t i = 0; i < surface.world.size(); ++i) {
-          const glm::vec3 reach =
-              shade_vertex(alone, surface.world[i], surface.normal[i], glm::vec3(1.0f));
-          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, std::max({reach.r, reach.g, reach.b}));
+          const bool faces = glm::dot(surface.normal[i], light.position - surface.world[i]) > 0.0f;
+          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, faces ? 1.0f : 0.0f);
         }
       }
+      GlBeamMask footprint(gl_, light, 0, frame.origin);
+      footprint.bind();
       gl_.glEnable(GL_ALPHA_TEST);
-      gl_.glAlphaFunc(GL_GREATER, 0.0f);
+      gl_.glAlphaFunc(GL_GEQUAL, 0.5f);
       gl_.glDepthFunc(GL_EQUAL);
       gl_.glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
       draw_surfaces(gl_, frame.surfaces, true);
       gl_.glDisable(GL_ALPHA_TEST);
+      footprint.release();
     }
     glideShimEndGL();
   }

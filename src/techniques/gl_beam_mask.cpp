@@ -1,0 +1,110 @@
+// The footprint and q-gate units of the plain-GL shadow masks. See gl_beam_mask.h.
+#include "techniques/gl_beam_mask.h"
+
+#include "scene/spotlight.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace gs {
+namespace {
+
+constexpr int kFootprintSide = 1024;  // texels across the beam plane's [-1, 1]
+// The gate's s = kGateSlope q (light-view depth, metres) in a two-texel step texture: open where
+// q > 0.5 / kGateSlope, 50 um in front of the light's plane.
+constexpr float kGateSlope = 1e4f;
+
+GLuint make_alpha_texture(const GlApi &gl, int width, int height, const std::uint8_t *texels,
+                          GLint filter, GLint wrap) {
+  GLuint texture = 0;
+  gl.glGenTextures(1, &texture);
+  gl.glBindTexture(GL_TEXTURE_2D, texture);
+  gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA8, width, height, 0, GL_ALPHA, GL_UNSIGNED_BYTE,
+                  texels);
+  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  const GLfloat none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  gl.glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, none);
+  gl.glBindTexture(GL_TEXTURE_2D, 0);
+  return texture;
+}
+
+void set_texgen(const GlApi &gl, const glm::mat4 &to_texture) {
+  const GLenum coords[4] = {GL_S, GL_T, GL_R, GL_Q};
+  const GLenum enables[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+                             GL_TEXTURE_GEN_Q};
+  for (int row = 0; row < 4; ++row) {
+    const GLfloat plane[4] = {to_texture[0][row], to_texture[1][row], to_texture[2][row],
+                              to_texture[3][row]};
+    gl.glTexGeni(coords[row], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    gl.glTexGenfv(coords[row], GL_EYE_PLANE, plane);
+    gl.glEnable(enables[row]);
+  }
+}
+
+}  // namespace
+
+GlBeamMask::GlBeamMask(const GlApi &gl, const SpotLight &light, int first, const glm::vec3 &origin)
+    : gl_(gl), light_(light), first_(first), origin_(origin) {
+  gl.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + first));
+  // GL's rows from t = 0, the beam plane's v = -1; texel centres at (i + 0.5) / side.
+  std::vector<std::uint8_t> footprint(static_cast<std::size_t>(kFootprintSide) * kFootprintSide);
+  for (int row = 0; row < kFootprintSide; ++row) {
+    for (int column = 0; column < kFootprintSide; ++column) {
+      const glm::vec2 uv((static_cast<float>(column) + 0.5f) / kFootprintSide * 2.0f - 1.0f,
+                         (static_cast<float>(row) + 0.5f) / kFootprintSide * 2.0f - 1.0f);
+      const bool lit = light.has_beam_map() ? beam_intensity(light, uv) > 0.0f
+                                            : glm::dot(uv, uv) < 1.0f;
+      footprint[static_cast<std::size_t>(row) * kFootprintSide + column] = lit ? 255 : 0;
+    }
+  }
+  footprint_ = make_alpha_texture(gl, kFootprintSide, kFootprintSide, footprint.data(), GL_LINEAR,
+                                  GL_CLAMP_TO_BORDER);
+  const std::uint8_t step[2] = {0, 255};
+  gate_ = make_alpha_texture(gl, 2, 1, step, GL_NEAREST, GL_CLAMP_TO_EDGE);
+  gl.glActiveTexture(GL_TEXTURE0);
+}
+
+GlBeamMask::~GlBeamMask() {
+  const GLuint textures[2] = {footprint_, gate_};
+  gl_.glDeleteTextures(2, textures);
+}
+
+void GlBeamMask::bind() {
+  const glm::mat4 light_clip = light_projection(light_) * light_view(light_) *
+                               glm::translate(glm::mat4(1.0f), origin_);
+  const glm::mat4 to_footprint = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0.0f)) *
+                                 glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f)) *
+                                 light_clip;
+  glm::mat4 to_gate(0.0f);  // s = kGateSlope q, t = 0.5, q = 1
+  for (int column = 0; column < 4; ++column) to_gate[column][0] = kGateSlope * light_clip[column][3];
+  to_gate[3][1] = 0.5f;
+  to_gate[3][3] = 1.0f;
+  const GLuint textures[2] = {footprint_, gate_};
+  const glm::mat4 *planes[2] = {&to_footprint, &to_gate};
+  for (int i = 0; i < 2; ++i) {
+    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + first_ + i));
+    gl_.glBindTexture(GL_TEXTURE_2D, textures[i]);
+    gl_.glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    set_texgen(gl_, *planes[i]);
+    gl_.glEnable(GL_TEXTURE_2D);
+  }
+  gl_.glActiveTexture(GL_TEXTURE0);
+}
+
+void GlBeamMask::release() {
+  for (int i = 1; i >= 0; --i) {
+    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + first_ + i));
+    gl_.glBindTexture(GL_TEXTURE_2D, 0);
+    gl_.glDisable(GL_TEXTURE_2D);
+    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
+      gl_.glDisable(gen);
+  }
+  gl_.glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace gs
