@@ -1,105 +1,30 @@
-// The projected shadow texture, step by step. Spaces: world; light view (the light at the
-// origin looking down -z); light clip (GL convention); Glide screen (pixels, y down) for both
-// the light's size x size view in step 1 and the camera in steps 4-5; Glide texture units
-// (s, t in 0..256 across the shadow texture).
+// The projected shadow texture in the article's order: step 1's flat render of the caster, step
+// 2's texture, step 5's pass and the frame that runs all five (render_projected_shadows), and the
+// shadow mask. Step 1's light view is fitted in light_view_fit.cpp, step 3 is receiver_coords.cpp,
+// step 4 scene_pass.cpp. Spaces: light view and light clip (step 1); Glide screen (pixels, y down)
+// for the light's size x size view in step 1 and the camera in steps 4-5.
 #include "techniques/projected_shadow.h"
 
-#include "techniques/light_beam.h"
 #include "techniques/stencil_volume_shadow.h"
 
 #include <glide_shim.h>
 #include <glideutl.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace gs {
 namespace {
 
 constexpr GrColor_t kShadowRedArgb = 0x00F00000u;  // red 240: the 565 red field 11110b
 
-
-
-
 GrLOD_t lod_for(int size) {
   GrLOD_t lod = GR_LOD_256;
   for (int side = 256; side > size; side /= 2) ++lod;
   return lod;
-}
-
-int screen_size_texture(const Scene &scene, const Sphere &caster) {
-  // The caster's diameter on screen in pixels, rounded up to a power of two: the article's LOD.
-  const float distance = std::max(glm::length(caster.centre - scene.camera.position), 1e-3f);
-  const float half_height = std::tan(glm::radians(scene.camera.fov_degrees) * 0.5f) * distance;
-  const float diameter_pixels = caster.radius / half_height * static_cast<float>(scene.height);
-  int size = 32;
-  while (size < 512 && static_cast<float>(size) < diameter_pixels) size *= 2;
-  return size;
-}
-
-// (s, t) numerators and divisor of a world point for step 5, in Glide texture units.
-glm::vec3 shadow_stq(const LightView &view, const glm::vec3 &world) {
-  const glm::vec4 clip = view.projection * view.view * glm::vec4(world, 1.0f);
-  return {(0.5f * clip.x + 0.5f * clip.w) * 256.0f, (0.5f * clip.w - 0.5f * clip.y) * 256.0f,
-          clip.w};
-}
-
-// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
-// the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
-// its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
-// beyond the caster's nearest point in that cell.
-bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
-  glm::vec2 low(INFINITY), high(-INFINITY);
-  float farthest = 0.0f;
-  for (std::size_t i = 0; i < count; ++i) {
-    farthest = std::max(farthest, light_clip[i].w);
-    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
-                          0.5f) * static_cast<float>(view.size);  // texels
-    low = glm::min(low, uv);
-    high = glm::max(high, uv);
-  }
-  const float cell = static_cast<float>(view.size) / LightView::kCells;
-  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
-  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
-  const int x1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
-  const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      const auto index = static_cast<std::size_t>(y * LightView::kCells + x);
-      if (view.occupied[index] && farthest > view.nearest[index]) return true;
-    }
-  }
-  return false;
-}
-
-float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
-                   ShadowAlpha mode) {
-  float alpha = light.shadow_strength * 255.0f;
-  if (mode == ShadowAlpha::Distance) {
-    // Fainter the farther the receiver is behind the caster, as a wider penumbra would be.
-    const float distance = glm::length(world - view.position);
-    alpha *= std::clamp(view.caster_distance / std::max(distance, 1e-3f), 0.0f, 1.0f);
-  }
-  return alpha;
-}
-
-// Fills the texture fields of a camera-screen vertex for the world point it stands for.
-void set_texture_fields(GrVertex &v, const LightView &view, const SpotLight &light,
-                        const glm::vec3 &world, const ProjectedShadowOptions &options) {
-  const glm::vec3 stq = shadow_stq(view, world);
-  if (options.projective) {
-    // The hardware divides per pixel by tmuvtx[0].oow (GR_STWHINT_W_DIFF_TMU0).
-    v.tmuvtx[0].sow = stq.x * v.oow;
-    v.tmuvtx[0].tow = stq.y * v.oow;
-    v.tmuvtx[0].oow = stq.z * v.oow;
-  } else {
-    // Listing 3: (s, t) divided per vertex, interpolated with the camera's perspective only.
-    v.tmuvtx[0].sow = stq.x / stq.z * v.oow;
-    v.tmuvtx[0].tow = stq.y / stq.z * v.oow;
-  }
-  v.a = shadow_alpha(light, view, world, options.alpha);
 }
 
 using Clock = std::chrono::steady_clock;
@@ -109,167 +34,7 @@ double elapsed_ms(Clock::time_point start) {
 
 }  // namespace
 
-namespace {
-
-constexpr float kWidestHalfView = 80.0f * 3.14159265f / 180.0f;  // beyond, texels stretch 30 times
-
-glm::vec3 up_for(const glm::vec3 &axis) {
-  return std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-}
-
-// The caster's triangles (world) clipped to the beam's outer pyramid and a plane `margin` in front
-// of the light (light_beam.h): every point of the caster that can shadow anything the light
-// reaches. `whole` says whether nothing was cut off.
-std::vector<glm::vec3> caster_in_beam(const SceneObject &object, const LightBeam &beam,
-                                      float margin, bool &whole) {
-  const Mesh &mesh = caster_mesh(object);
-  std::vector<glm::vec3> world(mesh.positions.size());
-  for (std::size_t i = 0; i < world.size(); ++i) {
-    world[i] = glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
-  }
-  return clip_to_beam(world, mesh.triangles, beam, margin, whole);
-}
-
-// The smallest square view from `position` along `axis` that holds every point: the largest
-// tangent |x| / -z or |y| / -z; infinite when a point is not in front of the light.
-float widest_tangent(const glm::vec3 &position, const glm::vec3 &axis,
-                     const std::vector<glm::vec3> &points, float &front, float &back) {
-  const glm::mat4 view = glm::lookAt(position, position + axis, up_for(axis));
-  float widest = 0.0f;
-  front = INFINITY, back = 0.0f;
-  for (const glm::vec3 &p : points) {
-    const glm::vec3 v = glm::vec3(view * glm::vec4(p, 1.0f));
-    if (!(-v.z > 0.0f)) return INFINITY;
-    widest = std::max(widest, std::max(std::abs(v.x), std::abs(v.y)) / -v.z);
-    front = std::min(front, -v.z);
-    back = std::max(back, -v.z);
-  }
-  return widest;
-}
-
-}  // namespace
-
-LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light_index,
-                         const ProjectedShadowOptions &options) {
-  const SceneObject &object = scene.objects[caster];
-  const SpotLight &light = scene.lights[light_index];
-  const Sphere sphere = caster_bounds(object);
-  const std::string names =
-      "light " + std::to_string(light_index) + " and '" + object.name + "'";
-  LightView view;
-  view.position = light.position;
-  view.size = options.auto_size  ? screen_size_texture(scene, sphere)
-              : options.size > 0 ? options.size
-                                 : light.shadow_size;
-  if (view.size < 32 || view.size > 512 || (view.size & (view.size - 1)) != 0) {
-    view.problem = "shadow size " + std::to_string(view.size) + " for light " +
-                   std::to_string(light_index) + " is not a power of two in 32..512, so '" +
-                   object.name + "' casts no shadow from it";
-    return view;
-  }
-  const LightBeam beam = light_beam(light);
-  view.beam = beam;
-  // The view keeps `border_texels` (plus one for the 1/16-pixel snap and bilinear's reach) clean
-  // on every side: the Figure 12/13 bug cannot occur.
-  const float usable = 1.0f - 2.0f * static_cast<float>(options.border_texels + 1) /
-                                  static_cast<float>(view.size);
-  const float reach = glm::length(sphere.centre - light.position) + sphere.radius;
-  bool whole = false;
-  const std::vector<glm::vec3> points =
-      caster_in_beam(object, beam, std::max(reach, 1e-6f) * 1e-4f, whole);
-  if (points.empty()) {
-    view.outside_beam = true;  // its shadow would fall where the light does not shine
-    return view;
-  }
-  view.caster_distance = glm::length(sphere.centre - light.position);
-  const float sine = sphere.radius / std::max(view.caster_distance, 1e-6f);
-  const float sphere_half = sine < 1.0f ? std::atan(std::tan(std::asin(sine)) / usable) : INFINITY;
-  if (whole && sphere_half < kWidestHalfView) {
-    // The article's view: the whole caster is in the beam, and its bounding sphere fits.
-    view.view = glm::lookAt(light.position, sphere.centre,
-                            up_for(glm::normalize(sphere.centre - light.position)));
-    view.caster_front = view.caster_distance - sphere.radius;
-    const float near_plane = std::max(view.caster_front * 0.5f, 1e-3f);
-    view.projection = glm::perspective(2.0f * sphere_half, 1.0f, near_plane,
-                                       view.caster_distance + sphere.radius * 1.01f);
-    view.usable = true;
-    return view;
-  }
-  // What the beam holds of the caster, seen along the axis of (about) the narrowest cone around
-  // it: the directions' mean moved towards the farthest one with shrinking steps (Badoiu and
-  // Clarkson's core-set iteration), or the light's own axis if that is narrower.
-  std::vector<glm::vec3> directions;
-  directions.reserve(points.size());
-  glm::vec3 sum(0.0f);
-  for (const glm::vec3 &p : points) {
-    const glm::vec3 d = p - light.position;
-    const float length = glm::length(d);
-    if (length > 0.0f) directions.push_back(d / length), sum += directions.back();
-  }
-  glm::vec3 axis = glm::length(sum) > 1e-6f ? glm::normalize(sum) : beam.axis;
-  for (int step = 1; step <= 64 && !directions.empty(); ++step) {
-    const glm::vec3 *farthest = &directions.front();
-    for (const glm::vec3 &d : directions) {
-      if (glm::dot(d, axis) < glm::dot(*farthest, axis)) farthest = &d;
-    }
-    const glm::vec3 moved = axis + (*farthest - axis) / static_cast<float>(step + 1);
-    if (!(glm::length(moved) > 1e-6f)) break;
-    axis = glm::normalize(moved);
-  }
-  float front = 0.0f, back = 0.0f, front_axis = 0.0f, back_axis = 0.0f;
-  float widest = widest_tangent(light.position, axis, points, front, back);
-  const float widest_axis = widest_tangent(light.position, beam.axis, points, front_axis, back_axis);
-  if (widest_axis < widest) widest = widest_axis, axis = beam.axis, front = front_axis, back = back_axis;
-  const float half_view = std::atan(widest / usable);
-  if (!(half_view < kWidestHalfView)) {
-    view.problem =
-        names + ": no single projection holds the caster as the light sees it (it would need a " +
-        (std::isfinite(half_view) ? std::to_string(static_cast<int>(std::ceil(glm::degrees(2.0f * half_view)))) +
-                                        " degree"
-                                  : std::string("more than 180 degree")) +
-        " view, the widest is " + std::to_string(static_cast<int>(glm::degrees(2.0f * kWidestHalfView))) +
-        "), so it casts no shadow from this light";
-    return view;
-  }
-  view.view = glm::lookAt(light.position, light.position + axis, up_for(axis));
-  view.caster_front = front;
-  view.caster_distance = 0.5f * (front + back);
-  const float near_plane = std::max(front * 0.5f, back * 1e-5f);
-  view.projection = glm::perspective(2.0f * half_view, 1.0f, near_plane, back * 1.01f);
-  // Step 1 draws only what lies inside the clean border and in front of the near plane: the rest
-  // of the caster is outside the beam, and drawn it would soil the border that clamping repeats.
-  for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, usable), glm::vec4(1, 0, 0, usable),
-                                glm::vec4(0, -1, 0, usable), glm::vec4(0, 1, 0, usable),
-                                glm::vec4(0, 0, 1, 1)}) {
-    view.caster_planes.push_back(glm::transpose(view.projection) * side);
-  }
-  view.usable = true;
-  return view;
-}
-
-std::vector<LightView> split_into_textures(const LightView &view) {
-  constexpr int kLargest = 256;  // GR_LOD_256
-  if (view.size <= kLargest) return {view};
-  const int tiles = view.size / kLargest;  // per side
-  std::vector<LightView> parts;
-  for (int ty = 0; ty < tiles; ++ty) {
-    for (int tx = 0; tx < tiles; ++tx) {
-      // Light clip space remapped so this tile's square of NDC becomes [-1, 1]^2 (rows from the
-      // top, as texture rows run): x' = tiles x + (tiles - 1 - 2 tx) w, likewise y.
-      glm::mat4 remap(1.0f);
-      remap[0][0] = remap[1][1] = static_cast<float>(tiles);
-      remap[3][0] = static_cast<float>(tiles - 1 - 2 * tx);
-      remap[3][1] = -static_cast<float>(tiles - 1 - 2 * ty);
-      LightView part = view;
-      part.projection = remap * view.projection;
-      part.size = kLargest;
-      part.clip_to_view = true;
-      parts.push_back(part);
-    }
-  }
-  return parts;
-}
-
+// Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address) {
   const SceneObject &object = scene.objects[caster];
@@ -370,6 +135,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
 }
 
+// Step 2: the region read back and downloaded as ARGB_4444 (or already in texture memory).
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
                                   FxU32 texture_address) {
   ShadowTexture texture;
@@ -390,105 +156,7 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
   return texture;
 }
 
-ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
-                                       std::size_t caster, const SpotLight &light,
-                                       const LightView &view, const ProjectedShadowOptions &options) {
-  ReceiverCoords coords;
-  const glm::mat4 light_clip = view.projection * view.view;
-  // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
-  // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
-  std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
-  if (view.clip_to_view) {
-    // A tile's sides as light-view planes: a clip-space plane p is transpose(P) p in view space.
-    for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, 1), glm::vec4(1, 0, 0, 1),
-                                  glm::vec4(0, -1, 0, 1), glm::vec4(0, 1, 0, 1)}) {
-      view_planes.push_back(glm::transpose(view.projection) * side);
-    }
-  }
-  // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
-  const glm::mat4 world_from_view = glm::inverse(view.view);
-  std::vector<std::vector<glm::vec4>> beam_regions;
-  for (const std::vector<glm::vec4> &region : view.beam.regions) {
-    beam_regions.emplace_back();
-    for (const glm::vec4 &plane : region) {
-      beam_regions.back().push_back(glm::transpose(world_from_view) * plane);
-    }
-  }
-  const LightBeam &beam = view.beam;
-  std::vector<ClipVertex> polygon, scratch;
-  for (std::size_t r = 0; r < frame.objects.size(); ++r) {
-    const ProjectedObject &receiver = frame.objects[r];
-    if (r == caster || !receiver.object->receives_shadow) continue;
-    const std::size_t n = receiver.world.size();
-    std::vector<glm::vec4> lc(n);  // light clip
-    std::vector<unsigned> flags(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      lc[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
-      const glm::vec4 &p = lc[i];
-      flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
-                 (p.w < view.caster_front) << 4;
-      if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
-    }
-    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-      // Listing 2: skip triangles facing away from the light and those wholly outside its view.
-      if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
-      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
-      const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
-      const bool in_front = (any_outside & 0x10) != 0;
-      const bool beyond_beam = (any_outside & 0x20) != 0;
-      const bool needs_clip =
-          in_front || beyond_beam || (view.clip_to_view && (any_outside & 0xF) != 0);
-      if (!needs_clip) {
-        const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        if (!sees_caster(view, corners, 3)) continue;
-      }
-      const bool exact = !needs_clip &&
-                         (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
-      if (exact) {
-        ShadowTriangle triangle;
-        const unsigned index[3] = {t.x, t.y, t.z};
-        for (int k = 0; k < 3; ++k) {
-          triangle.v[k] = receiver.screen[index[k]];
-          set_texture_fields(triangle.v[k], view, light, receiver.world[index[k]], options);
-        }
-        coords.triangles.push_back(triangle);
-        continue;
-      }
-      polygon.clear();
-      for (unsigned i : {t.x, t.y, t.z}) {
-        polygon.push_back({view.view * glm::vec4(receiver.world[i], 1.0f), receiver.world[i], {}});
-      }
-      for (const glm::vec4 &plane : view_planes) {
-        clip_polygon(polygon, plane, scratch);
-        if (polygon.size() < 3) break;
-      }
-      if (polygon.size() < 3) continue;
-      // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
-      const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
-      for (std::size_t piece = 0; piece < pieces; ++piece) {
-        std::vector<ClipVertex> part = polygon;
-        if (beyond_beam) {
-          for (const glm::vec4 &plane : beam_regions[piece]) {
-            if (part.size() < 3) break;
-            clip_polygon(part, plane, scratch);
-          }
-        }
-        if (part.size() < 3) continue;
-        std::vector<glm::vec4> corners;
-        for (const ClipVertex &v : part) corners.push_back(view.projection * v.clip);
-        if (!sees_caster(view, corners.data(), corners.size())) continue;
-        std::vector<GrVertex> screen;
-        project_camera_polygon(frame, scene, part, scratch, screen);
-        for (std::size_t i = 0; i < screen.size(); ++i) {
-          set_texture_fields(screen[i], view, light, part[i].world, options);
-        }
-        if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
-      }
-    }
-  }
-  return coords;
-}
+// Step 3 is compute_receiver_coords (receiver_coords.cpp), step 4 render_scene (scene_pass.cpp).
 
 namespace {
 
@@ -551,10 +219,6 @@ void restore_scene_state() {
   set_scene_state();
 }
 
-}  // namespace
-
-namespace {
-
 // Step 5 for the shadows of one light, in order, each pixel darkened once (the depth levels
 // above). Leaves marks in the depth buffer, up to kSealCodes nearer than step 4's surfaces.
 void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
@@ -594,6 +258,7 @@ void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
 
 }  // namespace
 
+// Step 5: the flagged triangles again with the shadow texture, for one shadow.
 void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options) {
   render_light_shadow_passes({&job}, options);
 }
