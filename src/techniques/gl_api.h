@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <glm/glm.hpp>
 
 #include <string>
 
@@ -34,5 +35,9 @@ struct GlApi {
 
 // Fills `api` from the shim's current context; false with `error` naming the first missing one.
 bool load_gl_api(GlApi &api, std::string &error);
+
+// EYE_LINEAR texgen for the active unit, enabled: s, t, r, q are the rows of `to_texture`, planes
+// in the vertex arrays' space (given while the modelview matrix is the camera's view of them).
+void set_eye_linear_texgen(const GlApi &gl, const glm::mat4 &to_texture);
 
 }  // namespace gs

@@ -33,19 +33,6 @@ GLuint make_alpha_texture(const GlApi &gl, int width, int height, const std::uin
   return texture;
 }
 
-void set_texgen(const GlApi &gl, const glm::mat4 &to_texture) {
-  const GLenum coords[4] = {GL_S, GL_T, GL_R, GL_Q};
-  const GLenum enables[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
-                             GL_TEXTURE_GEN_Q};
-  for (int row = 0; row < 4; ++row) {
-    const GLfloat plane[4] = {to_texture[0][row], to_texture[1][row], to_texture[2][row],
-                              to_texture[3][row]};
-    gl.glTexGeni(coords[row], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-    gl.glTexGenfv(coords[row], GL_EYE_PLANE, plane);
-    gl.glEnable(enables[row]);
-  }
-}
-
 }  // namespace
 
 GlBeamMask::GlBeamMask(const GlApi &gl, const SpotLight &light, int first, const glm::vec3 &origin)
@@ -90,7 +77,7 @@ void GlBeamMask::bind() {
     gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + first_ + i));
     gl_.glBindTexture(GL_TEXTURE_2D, textures[i]);
     gl_.glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    set_texgen(gl_, *planes[i]);
+    set_eye_linear_texgen(gl_, *planes[i]);
     gl_.glEnable(GL_TEXTURE_2D);
   }
   gl_.glActiveTexture(GL_TEXTURE0);
