@@ -93,26 +93,12 @@ void GlLightUnits::bind() {
   to_attenuation[3][3] = 1.0f;
 
   const GLuint textures[2] = {beam_, attenuation_};
-  const glm::mat4 *planes[2] = {&to_beam, &to_attenuation};
-  for (int i = 0; i < 2; ++i) {
-    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
-    gl_.glBindTexture(GL_TEXTURE_2D, textures[i]);
-    gl_.glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    set_eye_linear_texgen(gl_, *planes[i]);
-    gl_.glEnable(GL_TEXTURE_2D);
-  }
-  gl_.glActiveTexture(GL_TEXTURE0);
+  const glm::mat4 *const planes[2] = {&to_beam, &to_attenuation};
+  bind_projected_pair(gl_, 2, textures, planes);
 }
 
 void GlLightUnits::release() {
-  for (int i = 1; i >= 0; --i) {
-    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
-    gl_.glBindTexture(GL_TEXTURE_2D, 0);
-    gl_.glDisable(GL_TEXTURE_2D);
-    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
-      gl_.glDisable(gen);
-  }
-  gl_.glActiveTexture(GL_TEXTURE0);
+  release_projected_pair(gl_, 2);
 }
 
 }  // namespace gs
