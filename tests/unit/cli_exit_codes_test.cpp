@@ -2,13 +2,13 @@
 // run that failed (a scene file that is missing or broken, a frame missing shadows its technique
 // could not cast), 2 for a command line the tool refuses (CLI11's own codes, 105 and 106, never
 // reach the shell).
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 #ifndef GLIDESHADOWS_PATH
 #error "GLIDESHADOWS_PATH must name the glideshadows executable"
@@ -18,23 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-ToolRun run_tool(const std::string &arguments) {
-  const std::string command = std::string(GLIDESHADOWS_PATH) + " " + arguments + " 2>&1";
-  ToolRun run;
-  std::FILE *pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.output.append(buffer, got);
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+ToolRun run_tool(const std::string &arguments) { return ::run_tool(GLIDESHADOWS_PATH, arguments); }
 
 std::string scratch(const std::string &name) {
   const fs::path path = fs::path(::testing::TempDir()) / ("cli_exit_" + name);
