@@ -67,7 +67,8 @@ build_sanitized() {
     -DGLIDESHADOWS_BUILD_BENCH=OFF > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
   local targets=()
   if [ -n "${SANITIZE_TARGETS:-}" ]; then
-    read -r -a targets <<< "$SANITIZE_TARGETS"
+    # Every word of every line: the list may be written over several lines.
+    read -r -d '' -a targets <<< "$SANITIZE_TARGETS" || true
     targets=(--target "${targets[@]}")
   fi
   cmake --build build-asan -j"$(nproc)" "${targets[@]}" >> build-asan.log 2>&1 ||
