@@ -100,7 +100,7 @@ bool select_figures(const std::string &only, std::vector<const FigureEntry *> &s
   return true;
 }
 
-bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error) {
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error, FigureFault fault) {
   figure = Figure{};
   grSstWinClose();  // the previous figure's, if any
   if (!glideShimSetWindowSize(kFigureWindowWidth, kFigureWindowHeight) ||
@@ -110,7 +110,8 @@ bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error) {
     return false;
   }
   glideShimClearError();
-  entry.make(figure);
+  entry.make(figure, fault);
+  if (fault == FigureFault::InvalidGlideCall) grDepthBufferFunction(static_cast<GrCmpFnc_t>(99));
   const GlideShimError reported = glideShimGetLastError();
   figure.checks.push_back(figures::check(
       "Glide reported no error while the figure rendered", reported == GLIDESHIM_OK,

@@ -30,7 +30,16 @@ struct Figure {
   std::vector<FigureCheck> checks;
 };
 
-using FigureMaker = void (*)(Figure &);
+// A deliberate mistake a figure can be rendered with, so that a test can show its checks catch
+// it (tests/image/figure_faults_test.cpp). A figure honours the faults that name a step it has
+// and renders as usual for the others.
+enum class FigureFault {
+  None,
+  StaleReadBack,     // a panel read back after a later render has overwritten its frame
+  InvalidGlideCall,  // a Glide call with an enum Glide 2.x does not define (every figure)
+};
+
+using FigureMaker = void (*)(Figure &, FigureFault);
 
 struct FigureEntry {
   const char *name;     // "nguyen-7": how --only and the file names call it
@@ -54,8 +63,9 @@ constexpr int kFigureWindowHeight = 256;
 
 // Renders one figure into `figure`, in a new window (after grGlideInit; grGlideShutdown closes
 // the last one). False, with `error`, when the window cannot be opened. A Glide error raised
-// while it renders becomes a failed check.
-bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error);
+// while it renders becomes a failed check. `fault` renders the figure with that mistake.
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error,
+                 FigureFault fault = FigureFault::None);
 
 bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error);
 

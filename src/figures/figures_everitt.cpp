@@ -218,7 +218,7 @@ FigureCheck check_nearer_darker(const Words &map, const figures::Mask &casters, 
 
 }  // namespace
 
-void figure_everitt_2(Figure &figure) {
+void figure_everitt_2(Figure &figure, FigureFault) {
   const Scene scene = depth_scene();
   const DepthScale scale = depth_scale(scene);
   TechniqueOptions options;
@@ -256,7 +256,7 @@ void figure_everitt_2(Figure &figure) {
                       100 * (errors.false_light_band + errors.false_shadow_band))));
 }
 
-void figure_everitt_4(Figure &figure) {
+void figure_everitt_4(Figure &figure, FigureFault) {
   const Scene scene = depth_scene();
   const DepthScale scale = depth_scale(scene);
   TechniqueOptions options;
@@ -291,7 +291,7 @@ void figure_everitt_4(Figure &figure) {
       figures::format("%ld of %ld pixels inside the light's cone agree", agree, inside)));
 }
 
-void figure_everitt_5(Figure &figure) {
+void figure_everitt_5(Figure &figure, FigureFault) {
   Scene scene = depth_scene();
   scene.camera.position = glm::vec3(-1.6f, 2.6f, 1.8f);  // close on the box's shadow
   scene.camera.target = glm::vec3(-0.9f, 0.0f, -0.6f);

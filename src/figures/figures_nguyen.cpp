@@ -37,7 +37,7 @@ using figures::Words;
 
 }  // namespace
 
-void figure_nguyen_1(Figure &figure) {
+void figure_nguyen_1(Figure &figure, FigureFault) {
   // The blue fighter's front kick landing: the light low behind him, the camera close on the
   // red fighter's lit side, as the demo shows it.
   constexpr float kTime = 5.6f;
@@ -62,7 +62,7 @@ void figure_nguyen_1(Figure &figure) {
                                 format("%ld shadowed pixels on the ring", on_ring)));
 }
 
-void figure_nguyen_4(Figure &figure) {
+void figure_nguyen_4(Figure &figure, FigureFault) {
   const Scene scene = figures::article_scene();
   const Words unshadowed = figures::render_frame("none", {}, scene);
   ProjectedShadowOptions options;
@@ -99,7 +99,7 @@ void figure_nguyen_4(Figure &figure) {
                                 on_step >= 100, format("%ld shadowed pixels on the step", on_step)));
 }
 
-void figure_nguyen_5(Figure &figure) {
+void figure_nguyen_5(Figure &figure, FigureFault) {
   const Scene scene = figures::article_scene();
   const Scene light = from_the_light(scene);
   Words camera_mask, light_mask;
@@ -171,7 +171,7 @@ Words flagged_triangles(const Scene &scene) {
 
 }  // namespace
 
-void figure_nguyen_6(Figure &figure) {
+void figure_nguyen_6(Figure &figure, FigureFault) {
   const Scene scene = figures::article_scene();
   Scene receivers = from_the_light(scene);
   receivers.objects[kFighter].mesh = Mesh{};  // drawn without the caster (its shadow mesh stays)
@@ -205,7 +205,7 @@ void figure_nguyen_6(Figure &figure) {
       format("%ld of %ld silhouette texels over the floor or the step", landing, texels)));
 }
 
-void figure_nguyen_7(Figure &figure) {
+void figure_nguyen_7(Figure &figure, FigureFault) {
   const Scene scene = figures::article_scene();
   const Steps steps = run_steps(scene, {});
   const Words &words = steps.light_words;
@@ -235,7 +235,7 @@ void figure_nguyen_7(Figure &figure) {
                                        near_border(texture, words.width, 2))));
 }
 
-void figure_nguyen_8(Figure &figure) {
+void figure_nguyen_8(Figure &figure, FigureFault fault) {
   const Scene scene = figures::article_scene();
   Scene light = from_the_light(scene);
   light.objects[kFighter].mesh = Mesh{};  // the receivers alone; the shadow mesh still casts
@@ -244,8 +244,10 @@ void figure_nguyen_8(Figure &figure) {
   const ShadowFrame frame = render_projected_shadows(light, options, false);
   const Words receivers = figures::read_back(light.width, light.height);
   render_shadow_mask(options, frame);
-  const Mask projected = figures::non_zero(figures::read_back(light.width, light.height));
+  // Step 5 from the light, read back now: run_steps below renders the camera's frame over it.
+  Words step5 = figures::read_back(light.width, light.height);
   const Steps steps = run_steps(scene, options);
+  if (fault == FigureFault::StaleReadBack) step5 = figures::read_back(light.width, light.height);
   const Mask texture = alpha_set(steps.light_words);
   // The superimposition: the receivers from the light with the texture's alpha in red over them.
   FigureImage picture = figures::to_image(receivers, kListing4Gamma);
@@ -255,21 +257,22 @@ void figure_nguyen_8(Figure &figure) {
     picture.rgb[3 * i + 1] = static_cast<std::uint8_t>(picture.rgb[3 * i + 1] / 2);
     picture.rgb[3 * i + 2] = static_cast<std::uint8_t>(picture.rgb[3 * i + 2] / 2);
   }
+  // Checked on the words the right panel shows, so a panel read from the wrong frame fails.
+  const Mask projected = figures::non_zero(step5);
   const long both = count_both(projected, texture);
   const long either = count(projected) + count(texture) - both;
   figure.image = figures::compose({{picture, "TEXTURE OVER THE RECEIVERS"},
-                                   {figures::to_image(figures::read_back(light.width, light.height), 1.0f),
-                                    "STEP 5 FROM THE LIGHT"}});
+                                   {figures::to_image(step5, 1.0f), "STEP 5 FROM THE LIGHT"}});
   figure.shows = "Left: the receivers from the light with the shadow texture's alpha laid over them "
                  "in red. Right: step 5's shadow mask drawn with the camera at the light (point "
                  "sampled): the (s, t) of step 3 put each texel on the pixel under it.";
   figure.checks.push_back(check(
-      "(s, t) are the light-view x, y: from the light, the projected shadow covers exactly the texture's texels (overlap over union >= 97%)",
+      "(s, t) are the light-view x, y: in the right panel, from the light, the projected shadow covers exactly the texture's texels (overlap over union >= 97%)",
       either > 1000 && both * 100 >= either * 97,
       format("overlap %ld / union %ld pixels", both, either)));
 }
 
-void figure_nguyen_9(Figure &figure) {
+void figure_nguyen_9(Figure &figure, FigureFault) {
   Scene scene = figures::article_scene();
   scene.lights[0].shadow_strength = 1.0f;  // the texture at full opacity: black where alpha is 1111b
   ProjectedShadowOptions options;

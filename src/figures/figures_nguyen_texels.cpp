@@ -108,7 +108,7 @@ long mismatches(const Words &square, Map source) {
 
 }  // namespace
 
-void figure_nguyen_10(Figure &figure) {
+void figure_nguyen_10(Figure &figure, FigureFault) {
   const Words square = draw_square(GR_TEXTURECLAMP_CLAMP);
   // The part with (s, t) in [0, 1] is the middle third; elsewhere clamp repeats its edge texels.
   const int inside = kSquareLeft + kPeriod;
@@ -126,7 +126,7 @@ void figure_nguyen_10(Figure &figure) {
       wrong * 100 <= total, format("%ld of %ld pixels differ", wrong, total)));
 }
 
-void figure_nguyen_11(Figure &figure) {
+void figure_nguyen_11(Figure &figure, FigureFault) {
   const Words square = draw_square(GR_TEXTURECLAMP_WRAP);
   const int inside = kSquareLeft + kPeriod;
   const long wrong = mismatches(square, [&](int x, int y) {
@@ -163,7 +163,7 @@ Scene coarse_floor_scene() {
 
 }  // namespace
 
-void figure_nguyen_12(Figure &figure) {
+void figure_nguyen_12(Figure &figure, FigureFault) {
   const Scene scene = coarse_floor_scene();
   ProjectedShadowOptions options;
   Words frames[2], masks[2];
@@ -193,7 +193,7 @@ void figure_nguyen_12(Figure &figure) {
              false_shadow(0), false_shadow(1))));
 }
 
-void figure_nguyen_13(Figure &figure) {
+void figure_nguyen_13(Figure &figure, FigureFault) {
   const Scene scene = coarse_floor_scene();
   const Steps clipped = run_steps(scene, {}, clipping_view());
   const Steps clean = run_steps(scene, {});
@@ -209,7 +209,7 @@ void figure_nguyen_13(Figure &figure) {
                                 format("%ld texels within 2 of the edge", clean_ring)));
 }
 
-void figure_nguyen_14(Figure &figure) {
+void figure_nguyen_14(Figure &figure, FigureFault) {
   const Scene scene = figures::article_scene();
   ProjectedShadowOptions options;
   const Steps steps = run_steps(scene, options);
@@ -252,7 +252,7 @@ void figure_nguyen_14(Figure &figure) {
       format("%ld pixels changed with LEQUAL, %ld with LESS", changed[0], changed[1])));
 }
 
-void figure_nguyen_15(Figure &figure) {
+void figure_nguyen_15(Figure &figure, FigureFault) {
   Scene scene = figures::article_scene();
   // Close on the shadow of the fighter's arms on the step, with a coarse texture.
   scene.camera.position = glm::vec3(1.6f, 2.2f, 0.6f);
@@ -338,7 +338,7 @@ FxU16 framebuffer_word(GrColor_t argb) {
 
 }  // namespace
 
-void figure_nguyen_16(Figure &figure) {
+void figure_nguyen_16(Figure &figure, FigureFault) {
   // The layout as the frame buffer stores it: which bits pure red, green and blue set.
   char fields[16];
   const FxU16 red = framebuffer_word(0xFF0000), green = framebuffer_word(0x00FF00),
@@ -416,7 +416,7 @@ void decode_4444(const FxU16 texels[16], FxU16 colour[16], bool alpha[16]) {
 
 }  // namespace
 
-void figure_nguyen_17(Figure &figure) {
+void figure_nguyen_17(Figure &figure, FigureFault) {
   // The layout as the texture unit decodes it: one texel per bit, each with only that bit set.
   FxU16 single[16], colour[16];
   bool alpha[16];

@@ -58,7 +58,7 @@ Scene projector_scene() {
 
 }  // namespace
 
-void figure_sgi_3(Figure &figure) {
+void figure_sgi_3(Figure &figure, FigureFault) {
   const Scene scene = projector_scene();
   render_scene(scene, project_scene(scene));
   const figures::Words frame = figures::read_back(scene.width, scene.height);
@@ -158,7 +158,7 @@ figures::Words depth_as_grey(const figures::Words &depth) {
 
 }  // namespace
 
-void figure_sgi_4(Figure &figure) {
+void figure_sgi_4(Figure &figure, FigureFault) {
   const Scene scene = spotlight_scene();
   const SpotLight &spot = scene.lights[0];
   constexpr int kLightView = 256;
