@@ -35,8 +35,20 @@ struct Figure {
 // and renders as usual for the others.
 enum class FigureFault {
   None,
-  StaleReadBack,     // a panel read back after a later render has overwritten its frame
-  InvalidGlideCall,  // a Glide call with an enum Glide 2.x does not define (every figure)
+  StaleReadBack,       // a panel read back after a later render has overwritten its frame
+  WrongBuffer,         // a panel read back from the other buffer (colour for depth, or back)
+  InvalidGlideCall,    // a Glide call with an enum Glide 2.x does not define (every figure)
+  ShadowLeftOut,       // the shadow texture (or the technique's shadows) left out
+  FullStrength,        // the shadow pass at iterated alpha 255 instead of the article's 170
+  EyeBesideLight,      // the "from the light" view drawn from a point 0.3 m beside the light
+  FacingInverted,      // Listing 2's facing test inverted
+  NoCleanBorder,       // the fitted light view replaced by one whose border cuts the caster
+  BorderIgnored,       // the view that should cut the caster replaced by the fitted one
+  ShiftedProjection,   // the shadow texture projected through a light matrix moved sideways
+  TextureModeSwapped,  // clamp where the figure wraps and wrap where it clamps
+  SecondPassLess,      // the second pass at GR_CMP_LESS where the article needs LEQUAL
+  PointSampled,        // bilinear (or GL_LINEAR) filtering off where the figure filters
+  WrongFormat,         // a texture downloaded as ARGB_1555 instead of its format
 };
 
 using FigureMaker = void (*)(Figure &, FigureFault);

@@ -54,6 +54,9 @@ std::string format(const char *pattern, ...) __attribute__((format(printf, 1, 2)
 // the figures' window; `technique` is a technique_names() entry.
 Words render_frame(const std::string &technique, const TechniqueOptions &options,
                    const Scene &scene, Words *mask = nullptr);
+// The technique a figure draws its shadows with: `technique`, or "none" under
+// FigureFault::ShadowLeftOut.
+std::string shadowed_by(const std::string &technique, FigureFault fault);
 // Pixels where object `index` is the visible surface (drawn flat white, everything else black).
 Mask coverage(Scene scene, std::size_t index);
 // The same scene seen from `eye` towards `target` through a square size x size view.

@@ -3,6 +3,7 @@
 // reference_images/figures/<name>.png. Tolerance as for the other frames: llvmpipe's output
 // depends on the CPU's vector ISA, so a pixel may differ by 4/255 and 1% of pixels may differ
 // more. Also the `figures` command as a user runs it.
+#include "figure_faults.h"
 #include "figures/figures.h"
 #include "image_compare.h"
 
@@ -34,6 +35,10 @@ TEST_P(FigureTest, ChecksPassAndImageMatchesItsReference) {
   ASSERT_GE(figure.checks.size(), 2u) << "a figure states at least one claim besides the Glide-error check";
   for (const gs::FigureCheck &check : figure.checks) {
     EXPECT_TRUE(check.passed) << entry.source << ": " << check.claim << " (" << check.measured << ")";
+    // Glide's error check is the same for every figure; one case (nguyen-16) shows it failing.
+    const bool glide_error_check = check.claim.find("Glide reported no error") != std::string::npos;
+    EXPECT_TRUE(glide_error_check || has_fault_case(entry.name, check.claim))
+        << entry.name << ": no case of figure_faults.h shows this check failing: " << check.claim;
   }
   ASSERT_GT(figure.image.width, 0);
   ASSERT_EQ(figure.image.rgb.size(), static_cast<std::size_t>(figure.image.width * figure.image.height * 3));
