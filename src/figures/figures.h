@@ -1,5 +1,5 @@
-// The articles' figures, reproduced by our own renderers: Nguyen 1999 (Figures 1, 4-17), Segal
-// et al. 1992 (Figure 3) and Everitt et al. 2001 (Figures 2, 4, 5). Each figure is one small
+// The articles' figures, reproduced by our own renderers: Nguyen 1999 (Figures 1-17), Segal
+// et al. 1992 (Figures 3, 4) and Everitt et al. 2001 (Figures 2, 4, 5). Each figure is one small
 // function in a table; it renders its panels into one image and states, as checks evaluated on
 // the rendered pixels, what the article says the figure shows. Adding a figure is adding a
 // function (in figures_<source>.cpp, declared in figures_kit.h) and a row of figure_table().

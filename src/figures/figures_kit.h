@@ -75,6 +75,8 @@ namespace gs {
 
 // Nguyen 1999 (figures_nguyen.cpp).
 void figure_nguyen_1(Figure &figure, FigureFault fault);
+void figure_nguyen_2(Figure &figure, FigureFault fault);  // figures_nguyen_planar.cpp
+void figure_nguyen_3(Figure &figure, FigureFault fault);
 void figure_nguyen_4(Figure &figure, FigureFault fault);
 void figure_nguyen_5(Figure &figure, FigureFault fault);
 void figure_nguyen_6(Figure &figure, FigureFault fault);

@@ -1,5 +1,6 @@
 // The pieces Nguyen 1999's figures share (figures_nguyen.cpp: Figures 1, 4-9, the steps;
-// figures_nguyen_texels.cpp: Figures 10-17, the texture's addressing, border and format): the
+// figures_nguyen_planar.cpp: 2, 3; figures_nguyen_texels.cpp: 10-15, the texture's addressing,
+// border and filtering; figures_nguyen_formats.cpp: 16, 17, the pixel formats): the
 // article's scene objects, its five steps run one by one with step 1's words kept, the light's
 // view as a camera, and the shadow texture's alpha as a picture and a mask.
 #pragma once
