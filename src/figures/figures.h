@@ -41,6 +41,7 @@ enum class FigureFault {
   ShadowLeftOut,       // the shadow texture (or the technique's shadows) left out
   FullStrength,        // the shadow pass at iterated alpha 255 instead of the article's 170
   EyeBesideLight,      // the "from the light" view drawn from a point 0.3 m beside the light
+  LightMoved,          // the light drawn 0.3 m beside where the figure says it stands
   FacingInverted,      // Listing 2's facing test inverted
   NoCleanBorder,       // the fitted light view replaced by one whose border cuts the caster
   BorderIgnored,       // the view that should cut the caster replaced by the fitted one

@@ -59,7 +59,9 @@ Scene projector_scene() {
 }  // namespace
 
 void figure_sgi_3(Figure &figure, FigureFault fault) {
-  const Scene scene = projector_scene();
+  Scene scene = projector_scene();
+  const SpotLight projector = scene.lights[0];  // where the figure says it stands
+  if (fault == FigureFault::LightMoved) scene.lights[0].position += glm::vec3(0.3f, 0.0f, 0.0f);
   render_scene(scene, project_scene(scene));
   const figures::Words frame = figures::read_back(scene.width, scene.height);
   figures::Words slide;
@@ -69,10 +71,9 @@ void figure_sgi_3(Figure &figure, FigureFault fault) {
   // The check: the scene seen from the checker projector itself, lit by it alone and by the
   // ambient light alone. Every surface it sees must be brightened exactly where the slide's
   // texel under that pixel is bright (its 256 pixels span the slide's side).
-  Scene from_projector = figures::seen_from(scene, scene.lights[0].position, scene.lights[0].target,
-                                            scene.lights[0].cone_degrees, 256);
+  Scene from_projector = figures::seen_from(scene, projector.position, projector.target,
+                                            projector.cone_degrees, 256);
   from_projector.lights.resize(1);
-  if (fault == FigureFault::EyeBesideLight) from_projector.camera.position += glm::vec3(0.3f, 0.0f, 0.0f);
   from_projector.background = glm::vec3(0.0f);
   render_scene(from_projector, project_scene(from_projector));
   const figures::Words lit = figures::read_back(256, 256);
@@ -160,8 +161,9 @@ figures::Words depth_as_grey(const figures::Words &depth) {
 }  // namespace
 
 void figure_sgi_4(Figure &figure, FigureFault fault) {
-  const Scene scene = spotlight_scene();
-  const SpotLight &spot = scene.lights[0];
+  Scene scene = spotlight_scene();
+  const SpotLight spot = scene.lights[0];  // where the figure says it stands
+  if (fault == FigureFault::LightMoved) scene.lights[0].position += glm::vec3(0.3f, 0.0f, 0.0f);
   constexpr int kLightView = 256;
   // The shadow map: the scene's depth from the spotlight, read back from the aux buffer.
   const Scene from_light = figures::seen_from(scene, spot.position, spot.target, spot.cone_degrees,
@@ -177,7 +179,6 @@ void figure_sgi_4(Figure &figure, FigureFault fault) {
     beam_words.data.push_back(static_cast<FxU16>((v >> 3) << 11 | (v >> 2) << 5 | (v >> 3)));
   // Seen from the light, lit by the spotlight alone: where the beam map lets light through.
   Scene spot_only = from_light;
-  if (fault == FigureFault::EyeBesideLight) spot_only.camera.position += glm::vec3(0.3f, 0.0f, 0.0f);
   spot_only.ambient = glm::vec3(0.0f);
   spot_only.background = glm::vec3(0.0f);
   render_scene(spot_only, project_scene(spot_only));
