@@ -28,6 +28,7 @@ inline const std::vector<FigureFaultCase> &figure_fault_cases() {
       {"nguyen-4", F::FullStrength, "iterated alpha 170 leaves"},
       {"nguyen-4", F::ShadowLeftOut, "it climbs the step"},
       {"nguyen-5", F::EyeBesideLight, "the figure hides exactly the shadow it casts"},
+      {"nguyen-6", F::EyeBesideLight, "the left panel is the receivers as the light sees them"},
       {"nguyen-6", F::FacingInverted, "lies on a triangle Listing 2 flags"},
       {"nguyen-7", F::StaleReadBack, "the texture holds only 0xF000"},
       {"nguyen-7", F::StaleReadBack, "its alpha is the caster's silhouette"},
