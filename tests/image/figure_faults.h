@@ -6,6 +6,7 @@
 
 #include "figures/figures.h"
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,9 @@ inline const std::vector<FigureFaultCase> &figure_fault_cases() {
   };
   return cases;
 }
+
+// How gtest names a case in its output: "nguyen-8: in the right panel".
+inline void PrintTo(const FigureFaultCase &c, std::ostream *out) { *out << c.figure << ": " << c.claim; }
 
 // True when some case names `figure` and a claim containing its words.
 inline bool has_fault_case(const std::string &figure, const std::string &claim) {
