@@ -1,6 +1,6 @@
-// The articles' figures (src/figures*.cpp): one test per figure runs its checks (what the
-// article says the figure shows, measured on our pixels) and compares its image with
-// reference_images/figures/<name>.png. Tolerance as for the other frames: llvmpipe's output
+// The articles' figures (src/figures/): one test per figure runs its checks (what the article
+// says the figure shows, measured on our pixels), requires a fault case of figure_faults.h for
+// each, and compares its image with reference_images/figures/<name>.png. Tolerance as for the other frames: llvmpipe's output
 // depends on the CPU's vector ISA, so a pixel may differ by 4/255 and 1% of pixels may differ
 // more. Also the `figures` command as a user runs it.
 #include "figure_faults.h"
