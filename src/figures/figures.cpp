@@ -20,6 +20,10 @@ const std::vector<FigureEntry> &figure_table() {
       {"nguyen-1", "Nguyen 1999, Figure 1",
        "A screenshot of the article's sample program: projected shadow textures on a fighter.",
        figure_nguyen_1},
+      {"nguyen-2", "Nguyen 1999, Figure 2",
+       "Planar shadows: the caster's polygons projected onto the receivers' planes.", figure_nguyen_2},
+      {"nguyen-3", "Nguyen 1999, Figure 3",
+       "Planar shadows keep sharp edges even when the shadow is stretched.", figure_nguyen_3},
       {"nguyen-4", "Nguyen 1999, Figure 4",
        "The effect to reach: the man's shadow thrown across the scene.", figure_nguyen_4},
       {"nguyen-5", "Nguyen 1999, Figure 5",
@@ -100,7 +104,7 @@ bool select_figures(const std::string &only, std::vector<const FigureEntry *> &s
   return true;
 }
 
-bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error) {
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error, FigureFault fault) {
   figure = Figure{};
   grSstWinClose();  // the previous figure's, if any
   if (!glideShimSetWindowSize(kFigureWindowWidth, kFigureWindowHeight) ||
@@ -110,7 +114,8 @@ bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error) {
     return false;
   }
   glideShimClearError();
-  entry.make(figure);
+  entry.make(figure, fault);
+  if (fault == FigureFault::InvalidGlideCall) grDepthBufferFunction(static_cast<GrCmpFnc_t>(99));
   const GlideShimError reported = glideShimGetLastError();
   figure.checks.push_back(figures::check(
       "Glide reported no error while the figure rendered", reported == GLIDESHIM_OK,

@@ -1,5 +1,5 @@
-// The articles' figures, reproduced by our own renderers: Nguyen 1999 (Figures 1, 4-17), Segal
-// et al. 1992 (Figure 3) and Everitt et al. 2001 (Figures 2, 4, 5). Each figure is one small
+// The articles' figures, reproduced by our own renderers: Nguyen 1999 (Figures 1-17), Segal
+// et al. 1992 (Figures 3, 4) and Everitt et al. 2001 (Figures 2, 4, 5). Each figure is one small
 // function in a table; it renders its panels into one image and states, as checks evaluated on
 // the rendered pixels, what the article says the figure shows. Adding a figure is adding a
 // function (in figures_<source>.cpp, declared in figures_kit.h) and a row of figure_table().
@@ -30,7 +30,29 @@ struct Figure {
   std::vector<FigureCheck> checks;
 };
 
-using FigureMaker = void (*)(Figure &);
+// A deliberate mistake a figure can be rendered with, so that a test can show its checks catch
+// it (tests/image/figure_faults_test.cpp). A figure honours the faults that name a step it has
+// and renders as usual for the others.
+enum class FigureFault {
+  None,
+  StaleReadBack,       // a panel read back after a later render has overwritten its frame
+  WrongBuffer,         // a panel read back from the other buffer (colour for depth, or back)
+  InvalidGlideCall,    // a Glide call with an enum Glide 2.x does not define (every figure)
+  ShadowLeftOut,       // the shadow texture (or the technique's shadows) left out
+  FullStrength,        // the shadow pass at iterated alpha 255 instead of the article's 170
+  EyeBesideLight,      // the "from the light" view drawn from a point 0.3 m beside the light
+  LightMoved,          // the light drawn 0.3 m beside where the figure says it stands
+  FacingInverted,      // Listing 2's facing test inverted
+  NoCleanBorder,       // the fitted light view replaced by one whose border cuts the caster
+  BorderIgnored,       // the view that should cut the caster replaced by the fitted one
+  ShiftedProjection,   // the shadow texture projected through a light matrix moved sideways
+  TextureModeSwapped,  // clamp where the figure wraps and wrap where it clamps
+  SecondPassLess,      // the second pass at GR_CMP_LESS where the article needs LEQUAL
+  PointSampled,        // bilinear (or GL_LINEAR) filtering off where the figure filters
+  WrongFormat,         // a texture downloaded as ARGB_1555 instead of its format
+};
+
+using FigureMaker = void (*)(Figure &, FigureFault);
 
 struct FigureEntry {
   const char *name;     // "nguyen-7": how --only and the file names call it
@@ -54,8 +76,9 @@ constexpr int kFigureWindowHeight = 256;
 
 // Renders one figure into `figure`, in a new window (after grGlideInit; grGlideShutdown closes
 // the last one). False, with `error`, when the window cannot be opened. A Glide error raised
-// while it renders becomes a failed check.
-bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error);
+// while it renders becomes a failed check. `fault` renders the figure with that mistake.
+bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error,
+                 FigureFault fault = FigureFault::None);
 
 bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error);
 

@@ -144,6 +144,10 @@ Words render_frame(const std::string &technique, const TechniqueOptions &options
   return frame;
 }
 
+std::string shadowed_by(const std::string &technique, FigureFault fault) {
+  return fault == FigureFault::ShadowLeftOut ? "none" : technique;
+}
+
 Mask coverage(Scene scene, std::size_t index) {
   scene.lights.clear();
   scene.ambient = glm::vec3(1.0f);

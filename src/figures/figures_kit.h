@@ -54,6 +54,9 @@ std::string format(const char *pattern, ...) __attribute__((format(printf, 1, 2)
 // the figures' window; `technique` is a technique_names() entry.
 Words render_frame(const std::string &technique, const TechniqueOptions &options,
                    const Scene &scene, Words *mask = nullptr);
+// The technique a figure draws its shadows with: `technique`, or "none" under
+// FigureFault::ShadowLeftOut.
+std::string shadowed_by(const std::string &technique, FigureFault fault);
 // Pixels where object `index` is the visible surface (drawn flat white, everything else black).
 Mask coverage(Scene scene, std::size_t index);
 // The same scene seen from `eye` towards `target` through a square size x size view.
@@ -71,27 +74,29 @@ double darkening(FxU16 unshadowed, FxU16 shadowed);
 namespace gs {
 
 // Nguyen 1999 (figures_nguyen.cpp).
-void figure_nguyen_1(Figure &figure);
-void figure_nguyen_4(Figure &figure);
-void figure_nguyen_5(Figure &figure);
-void figure_nguyen_6(Figure &figure);
-void figure_nguyen_7(Figure &figure);
-void figure_nguyen_8(Figure &figure);
-void figure_nguyen_9(Figure &figure);
-void figure_nguyen_10(Figure &figure);
-void figure_nguyen_11(Figure &figure);
-void figure_nguyen_12(Figure &figure);
-void figure_nguyen_13(Figure &figure);
-void figure_nguyen_14(Figure &figure);
-void figure_nguyen_15(Figure &figure);
-void figure_nguyen_16(Figure &figure);
-void figure_nguyen_17(Figure &figure);
+void figure_nguyen_1(Figure &figure, FigureFault fault);
+void figure_nguyen_2(Figure &figure, FigureFault fault);  // figures_nguyen_planar.cpp
+void figure_nguyen_3(Figure &figure, FigureFault fault);
+void figure_nguyen_4(Figure &figure, FigureFault fault);
+void figure_nguyen_5(Figure &figure, FigureFault fault);
+void figure_nguyen_6(Figure &figure, FigureFault fault);
+void figure_nguyen_7(Figure &figure, FigureFault fault);
+void figure_nguyen_8(Figure &figure, FigureFault fault);
+void figure_nguyen_9(Figure &figure, FigureFault fault);
+void figure_nguyen_10(Figure &figure, FigureFault fault);
+void figure_nguyen_11(Figure &figure, FigureFault fault);
+void figure_nguyen_12(Figure &figure, FigureFault fault);
+void figure_nguyen_13(Figure &figure, FigureFault fault);
+void figure_nguyen_14(Figure &figure, FigureFault fault);
+void figure_nguyen_15(Figure &figure, FigureFault fault);
+void figure_nguyen_16(Figure &figure, FigureFault fault);
+void figure_nguyen_17(Figure &figure, FigureFault fault);
 // Segal et al. 1992 (figures_sgi.cpp).
-void figure_sgi_3(Figure &figure);
-void figure_sgi_4(Figure &figure);
+void figure_sgi_3(Figure &figure, FigureFault fault);
+void figure_sgi_4(Figure &figure, FigureFault fault);
 // Everitt et al. 2001 (figures_everitt.cpp).
-void figure_everitt_2(Figure &figure);
-void figure_everitt_4(Figure &figure);
-void figure_everitt_5(Figure &figure);
+void figure_everitt_2(Figure &figure, FigureFault fault);
+void figure_everitt_4(Figure &figure, FigureFault fault);
+void figure_everitt_5(Figure &figure, FigureFault fault);
 
 }  // namespace gs

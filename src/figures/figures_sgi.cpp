@@ -58,8 +58,10 @@ Scene projector_scene() {
 
 }  // namespace
 
-void figure_sgi_3(Figure &figure) {
-  const Scene scene = projector_scene();
+void figure_sgi_3(Figure &figure, FigureFault fault) {
+  Scene scene = projector_scene();
+  const SpotLight projector = scene.lights[0];  // where the figure says it stands
+  if (fault == FigureFault::LightMoved) scene.lights[0].position += glm::vec3(0.3f, 0.0f, 0.0f);
   render_scene(scene, project_scene(scene));
   const figures::Words frame = figures::read_back(scene.width, scene.height);
   figures::Words slide;
@@ -69,8 +71,8 @@ void figure_sgi_3(Figure &figure) {
   // The check: the scene seen from the checker projector itself, lit by it alone and by the
   // ambient light alone. Every surface it sees must be brightened exactly where the slide's
   // texel under that pixel is bright (its 256 pixels span the slide's side).
-  Scene from_projector = figures::seen_from(scene, scene.lights[0].position, scene.lights[0].target,
-                                            scene.lights[0].cone_degrees, 256);
+  Scene from_projector = figures::seen_from(scene, projector.position, projector.target,
+                                            projector.cone_degrees, 256);
   from_projector.lights.resize(1);
   from_projector.background = glm::vec3(0.0f);
   render_scene(from_projector, project_scene(from_projector));
@@ -158,9 +160,10 @@ figures::Words depth_as_grey(const figures::Words &depth) {
 
 }  // namespace
 
-void figure_sgi_4(Figure &figure) {
-  const Scene scene = spotlight_scene();
-  const SpotLight &spot = scene.lights[0];
+void figure_sgi_4(Figure &figure, FigureFault fault) {
+  Scene scene = spotlight_scene();
+  const SpotLight spot = scene.lights[0];  // where the figure says it stands
+  if (fault == FigureFault::LightMoved) scene.lights[0].position += glm::vec3(0.3f, 0.0f, 0.0f);
   constexpr int kLightView = 256;
   // The shadow map: the scene's depth from the spotlight, read back from the aux buffer.
   const Scene from_light = figures::seen_from(scene, spot.position, spot.target, spot.cone_degrees,
@@ -184,8 +187,8 @@ void figure_sgi_4(Figure &figure) {
   // with Nguyen's projected shadow texture; the truth for the shadow masks.
   figures::Words depth_mask, projected_mask;
   TechniqueOptions options;
-  const figures::Words both = figures::render_frame("depth-map", options, scene, &depth_mask);
-  const figures::Words both_glide = figures::render_frame("projected", options, scene, &projected_mask);
+  const figures::Words both = figures::render_frame(figures::shadowed_by("depth-map", fault), options, scene, &depth_mask);
+  const figures::Words both_glide = figures::render_frame(figures::shadowed_by("projected", fault), options, scene, &projected_mask);
 
   figure.image = figures::compose(
       {{figures::to_image(depth_as_grey(depth), 1.0f), "THE SHADOW MAP"},
@@ -200,14 +203,7 @@ void figure_sgi_4(Figure &figure) {
       "Glide shim, the beam and attenuation in Segal et al.'s passes and the shadows by Nguyen's "
       "projected texture.";
 
-  // The beam map: dark bars, bright panes, black outside the round beam.
   const auto texel = [&](int x, int y) { return beam[static_cast<std::size_t>(y * kBeamSide + x)]; };
-  figure.checks.push_back(figures::check(
-      "the spotlight map is the beam's cross-section: the gobo's bars and the outside of the beam are dark, its panes bright",
-      texel(64, 32) == 0 && texel(32, 64) == 0 && texel(2, 2) == 0 && texel(40, 40) == 255 &&
-          texel(88, 88) == 255,
-      figures::format("bar %d, bar %d, corner %d, panes %d and %d", texel(64, 32), texel(32, 64),
-                      texel(2, 2), texel(40, 40), texel(88, 88))));
   // Seen from the light, each pixel is the beam texel under it: dark under the bars, lit in the
   // panes (away from the texels' edges, where bilinear filtering blends).
   long compared = 0, agree = 0;
@@ -234,20 +230,24 @@ void figure_sgi_4(Figure &figure) {
   GroundTruth truth;
   std::string error;
   const bool traced = compute_ground_truth(scene, truth, error);
+  // Misclassified pixels as a share of the truth's shadowed pixels (the shadows cover about 1%
+  // of the visible pixels, so a share of those would let a frame without shadows pass).
+  long true_shadow = 0;
+  for (std::size_t i = 0; traced && i < truth.shadow.size(); ++i) true_shadow += truth.object[i] >= 0 && truth.shadow[i];
   auto wrong = [&](const figures::Words &mask) {
-    long misclassified = 0, seen = 0;
+    long misclassified = 0;
     for (std::size_t i = 0; i < truth.shadow.size() && i < mask.data.size(); ++i) {
       if (truth.object[i] < 0) continue;
-      ++seen;
       misclassified += (mask.data[i] != 0) != (truth.shadow[i] != 0);
     }
-    return seen > 0 ? static_cast<double>(misclassified) / static_cast<double>(seen) : 1.0;
+    return true_shadow > 0 ? static_cast<double>(misclassified) / static_cast<double>(true_shadow) : 1.0;
   };
   const double depth_wrong = traced ? wrong(depth_mask) : 1.0, glide_wrong = traced ? wrong(projected_mask) : 1.0;
   figure.checks.push_back(figures::check(
-      "shadow and spotlight together: both renderers' shadows match the ray-cast truth (under 2% of the visible pixels misclassified)",
-      traced && depth_wrong < 0.02 && glide_wrong < 0.02,
-      traced ? figures::format("depth map %.2f%%, projected texture %.2f%% of visible pixels", 100 * depth_wrong, 100 * glide_wrong)
+      "shadow and spotlight together: both renderers' shadows match the ray-cast truth (misclassified pixels under 5% of the true shadow's)",
+      traced && true_shadow >= 300 && depth_wrong < 0.05 && glide_wrong < 0.05,
+      traced ? figures::format("depth map %.2f%%, projected texture %.2f%% of the %ld truly shadowed pixels",
+                               100 * depth_wrong, 100 * glide_wrong, true_shadow)
              : error));
 }
 

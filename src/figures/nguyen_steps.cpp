@@ -13,7 +13,7 @@
 namespace gs::figures {
 
 Steps run_steps(const Scene &scene, const ProjectedShadowOptions &options,
-                const glm::mat4 &narrowing) {
+                const glm::mat4 &narrowing, FigureFault fault) {
   Steps steps;
   ShadowJob job;
   job.caster = kFighter;
@@ -27,14 +27,27 @@ Steps run_steps(const Scene &scene, const ProjectedShadowOptions &options,
   if (!job.view.usable) return steps;
   steps.light_words = figures::read_back(job.view.size, job.view.size);
   job.texture = make_shadow_texture(job.view, options, address);  // 2
+  if (fault == FigureFault::ShiftedProjection) {
+    // Light clip space: 6 texels of the 256 (clip x spans 2 over the texture).
+    job.view.projection = glm::translate(glm::mat4(1.0f), glm::vec3(12.0f / 256.0f, 0.0f, 0.0f)) *
+                          job.view.projection;
+  }
   const FrameGeometry geometry = project_scene(scene);
   job.receivers = compute_receiver_coords(scene, geometry, kFighter, scene.lights[0], job.view,
                                           options);  // 3
   render_scene(scene, geometry);                     // 4
-  render_shadow_pass(job, options);                  // 5
-  steps.frame.jobs.push_back(std::move(job));
+  if (fault == FigureFault::StaleReadBack) steps.light_words = figures::read_back(job.view.size, job.view.size);
+  if (fault != FigureFault::ShadowLeftOut) {
+    render_shadow_pass(job, options);  // 5
+    steps.frame.jobs.push_back(std::move(job));
+  }
   steps.usable = true;
   return steps;
+}
+
+glm::mat4 border_cutting_view() {
+  return glm::translate(glm::mat4(1.0f), glm::vec3(-0.7f, 0.0f, 0.0f)) *
+         glm::scale(glm::mat4(1.0f), glm::vec3(1.3f, 1.3f, 1.0f));
 }
 
 // The light's view of the fighter as a camera: the same eye, axis, up and field of view as
@@ -78,26 +91,31 @@ long near_border(const Mask &mask, int size, int ring) {
   return n;
 }
 
-// The technique's mask against the ray-cast truth on the pixels of the floor and the step,
-// the truth cast by the mesh step 1 drew (the fighter's simplified shadow mesh), so what is
-// measured is the projection, not the simplification. The ray caster lets every object cast,
-// so the step's own shadow (which the figures leave out) is taken out of the comparison.
-MaskErrors against_truth(Scene scene, const Words &mask) {
+// The ray-cast shadow of the mesh step 1 drew (the fighter's simplified shadow mesh) on the
+// floor and the step, and which pixels count: floor and step pixels outside the step's own
+// shadow (the ray caster lets every object cast; the figures leave the step's shadow out).
+bool true_shadow(Scene scene, Mask &shadow, Mask &receivers) {
   scene.objects[kFighter].mesh = caster_mesh(scene.objects[kFighter]);
   Scene without_fighter = scene;
   without_fighter.objects.pop_back();
   GroundTruth truth, step_only;
   std::string error;
-  MaskErrors errors;
   if (!compute_ground_truth(scene, truth, error) || !compute_ground_truth(without_fighter, step_only, error)) {
-    return errors;
+    return false;
   }
-  Mask receivers(truth.object.size());
+  receivers.assign(truth.object.size(), 0);
   for (std::size_t i = 0; i < receivers.size(); ++i) {
     const bool floor_or_step = truth.object[i] == static_cast<int>(kFloor) || truth.object[i] == static_cast<int>(kStep);
     receivers[i] = floor_or_step && step_only.shadow[i] == 0;
   }
-  return compare_masks(figures::non_zero(mask), truth.shadow, receivers, truth.width, truth.height);
+  shadow = truth.shadow;
+  return true;
+}
+
+MaskErrors against_truth(const Scene &scene, const Words &mask) {
+  Mask shadow, receivers;
+  if (!true_shadow(scene, shadow, receivers)) return {};
+  return compare_masks(figures::non_zero(mask), shadow, receivers, scene.width, scene.height);
 }
 
 }  // namespace gs::figures

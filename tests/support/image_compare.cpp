@@ -42,8 +42,12 @@ std::string test_output_path(const std::string &name) {
     return ::testing::AssertionFailure() << "cannot read " << actual_png << " or " << reference;
   }
   if (actual.spec().width != golden.spec().width || actual.spec().height != golden.spec().height) {
+    const std::string kept = output_path(name + ".actual.png");
+    fs::copy_file(actual_png, kept, fs::copy_options::overwrite_existing);
     return ::testing::AssertionFailure() << name << ": size " << actual.spec().width << "x"
-                                         << actual.spec().height << " differs from the reference's";
+                                         << actual.spec().height << " differs from the reference's "
+                                         << golden.spec().width << "x" << golden.spec().height
+                                         << " (no difference image). Actual: " << kept;
   }
   const auto result = OIIO::ImageBufAlgo::compare(actual, golden, tolerance.channel, tolerance.channel);
   const double pixels = static_cast<double>(actual.spec().width) * actual.spec().height;
