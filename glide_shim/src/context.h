@@ -145,6 +145,7 @@ struct DisplayState {
   GrColorFormat_t color_format;
   float gamma;
   int swaps;  // frames shown so far, for the frame dump's file names
+  bool dump_dir_missing_reported;  // GLIDESHIM_DUMP_DIR named no directory: said once per window
   int none_width = 640, none_height = 480;  // the size GR_RESOLUTION_NONE opens
 };
 

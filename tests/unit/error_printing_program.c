@@ -1,19 +1,15 @@
 /* A Glide program that makes bad calls, for error_printing_test.cpp: which lines the shim
- * prints to stderr with and without an error callback. It prints nothing itself on success, so
- * that everything the test reads is the shim's; it exits 1 if a call did not record the error
- * it should have (or the callback saw the wrong number of errors), 2 on a bad mode. */
+ * prints to stderr with and without an error callback. Its own output is only its callback's,
+ * one "callback: <message>" line on stdout per error; it exits 1 if a call did not record the
+ * error it should have, 2 on a bad command line. */
 #include <glide.h>
 #include <glide_shim.h>
 
 #include <stdio.h>
 #include <string.h>
 
-static int callback_calls = 0;
-
-static void count_error(const char *message, FxBool fatal) {
-  (void)message;
-  (void)fatal;
-  ++callback_calls;
+static void print_error(const char *message, FxBool fatal) {
+  printf("callback: %s%s\n", message, fatal ? " (fatal)" : "");
 }
 
 /* Three bad clip windows (one message), two bad blend factors (another): five errors. */
@@ -54,7 +50,7 @@ int main(int argc, char **argv) {
   if (argc != 3) return 2;
   grGlideInit();
   if (strcmp(argv[1], "callback") == 0) {
-    grErrorSetCallback(count_error);
+    grErrorSetCallback(print_error);
   } else if (strcmp(argv[1], "no-callback") != 0) {
     return 2;
   }
@@ -63,9 +59,9 @@ int main(int argc, char **argv) {
                     GR_ORIGIN_UPPER_LEFT, 2, 1))
     return 1;
   if (strcmp(mode, "repeated") == 0) {
-    ok = repeated_errors() && (argv[1][0] != 'c' || callback_calls == 5);
+    ok = repeated_errors();
   } else if (strcmp(mode, "many") == 0) {
-    ok = many_errors() && (argv[1][0] != 'c' || callback_calls == 100);
+    ok = many_errors();
   } else if (strcmp(mode, "swaps") == 0) {
     ok = swaps();
   } else {

@@ -1,7 +1,7 @@
 // Errors a program sees without installing grErrorSetCallback (docs/porting.md#errors): the shim
-// prints each distinct message once to stderr, at most kMaxPrintedErrors of them, GLIDESHIM_QUIET
-// silences it, and with a callback nothing is printed. Runs error_printing_program, which writes
-// nothing itself, so that its whole output is the shim's.
+// prints each distinct message once to stderr, at most 64 of them, GLIDESHIM_QUIET silences it,
+// and with a callback nothing is printed; a missing GLIDESHIM_DUMP_DIR is one such error. Runs
+// error_printing_program, whose own output is only its callback's "callback: " lines.
 #include "tool_run.h"
 
 #include <gtest/gtest.h>
@@ -77,18 +77,60 @@ TEST(ErrorPrinting, QuietVariableSilencesIt) {
 }
 
 TEST(ErrorPrinting, WithACallbackNothingIsPrinted) {
-  // The program checks that its callback saw all five, and all 100, errors.
-  for (const char *mode : {"callback repeated", "callback many"}) {
-    const ToolRun run = run_program("", mode);
-    EXPECT_EQ(run.exit_code, 0) << mode;
-    EXPECT_EQ(run.output, "") << mode;
-  }
+  const ToolRun repeated = run_program("", "callback repeated");
+  EXPECT_EQ(repeated.exit_code, 0);
+  const std::vector<std::string> lines = lines_of(repeated.output);
+  EXPECT_EQ(lines.size(), 5u) << repeated.output;  // every error, repeated ones too
+  EXPECT_EQ(count_containing(lines, "callback: grClipWindow: (0,0)-(5000,10)"), 3u);
+  EXPECT_EQ(count_containing(lines, "callback: grAlphaBlendFunction: "), 2u);
+  EXPECT_EQ(count_containing(lines, "glide_shim:"), 0u) << repeated.output;
+
+  const ToolRun many = run_program("", "callback many");
+  EXPECT_EQ(many.exit_code, 0);
+  EXPECT_EQ(lines_of(many.output).size(), 100u);
+  EXPECT_EQ(count_containing(lines_of(many.output), "callback: grClipWindow: "), 100u);
 }
 
 TEST(ErrorPrinting, ACleanRunPrintsNothing) {
   const ToolRun run = run_program("", "no-callback swaps");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.output, "");
+}
+
+std::string scratch_dir(const std::string &name) {
+  const fs::path path = fs::path(::testing::TempDir()) / ("error_printing_" + name);
+  fs::remove_all(path);
+  return path.string();
+}
+
+TEST(DumpDirectory, AMissingDirectoryIsReportedOnceNamingIt) {
+  const std::string missing = scratch_dir("missing");  // removed, not created
+  const std::string environment = "GLIDESHIM_DUMP_DIR=" + missing;
+  const std::string expected =
+      "grBufferSwap: GLIDESHIM_DUMP_DIR '" + missing + "' is not an existing directory";
+
+  const ToolRun printed = run_program(environment, "no-callback swaps");  // two swaps
+  EXPECT_EQ(printed.exit_code, 0);
+  const std::vector<std::string> lines = lines_of(printed.output);
+  ASSERT_EQ(lines.size(), 1u) << printed.output;
+  EXPECT_EQ(lines[0].rfind("glide_shim: " + expected, 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find("[GLIDESHIM_ERR_BACKEND]"), std::string::npos) << lines[0];
+
+  const ToolRun called = run_program(environment, "callback swaps");
+  EXPECT_EQ(called.exit_code, 0);
+  ASSERT_EQ(lines_of(called.output).size(), 1u) << called.output;
+  EXPECT_EQ(called.output.rfind("callback: " + expected, 0), 0u) << called.output;
+  EXPECT_FALSE(fs::exists(missing));
+}
+
+TEST(DumpDirectory, AnExistingDirectoryGetsEveryFrameAndNoError) {
+  const std::string dir = scratch_dir("present");
+  fs::create_directories(dir);
+  const ToolRun run = run_program("GLIDESHIM_DUMP_DIR=" + dir, "callback swaps");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.output, "");
+  EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / "frame_00000.png"));
+  EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / "frame_00001.png"));
 }
 
 }  // namespace
