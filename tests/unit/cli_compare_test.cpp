@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <unistd.h>
 
 #ifndef GLIDESHADOWS_PATH
 #error "GLIDESHADOWS_PATH must name the glideshadows executable"
@@ -28,7 +29,8 @@ class CompareCommand : public ::testing::Test {
  protected:
   // One scene rendered by two techniques (colour images), its mask and the true mask.
   static void SetUpTestSuite() {
-    dir_ = (fs::path(::testing::TempDir()) / "cli_compare").string();
+    // ctest runs each test as its own process, in parallel: one directory per process.
+    dir_ = (fs::path(::testing::TempDir()) / ("cli_compare_" + std::to_string(::getpid()))).string();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     const std::string scene = std::string(GLIDESHADOWS_HARD_CASES_DIR) + "/box_over_floor.json";
@@ -40,6 +42,7 @@ class CompareCommand : public ::testing::Test {
       ASSERT_EQ(run.exit_code, 0) << arguments << ": " << run.output;
     }
   }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
   static std::string file(const std::string &name) { return dir_ + "/" + name; }
   static std::string dir_;
 };
