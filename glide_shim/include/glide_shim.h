@@ -21,7 +21,9 @@ extern "C" {
  * (writing a GLIDESHIM_DUMP_DIR frame after a swap, compiling a shader for queued triangles);
  * GLIDESHIM_ERR_OUT_OF_MEMORY and GLIDESHIM_ERR_INTERNAL stop a call wherever the exception was
  * thrown, so the call returned its failure value but may have done part of its work. No C++
- * exception ever leaves a call into the shim. */
+ * exception ever leaves a call into the shim. Each error goes to the grErrorSetCallback callback;
+ * with none installed, each distinct message is printed once to stderr unless the environment
+ * sets GLIDESHIM_QUIET=1. */
 typedef enum {
   GLIDESHIM_OK = 0,
   GLIDESHIM_ERR_NOT_INITIALIZED, /* a call before grGlideInit, or one needing a window with none open */

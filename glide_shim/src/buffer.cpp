@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 using glide_shim::current;
@@ -60,6 +61,15 @@ void grBufferSwap(int swap_interval) {
   const int frame = ctx.display.swaps++;
   const char *dir = std::getenv("GLIDESHIM_DUMP_DIR");
   if (dir != nullptr && *dir != '\0') {
+    std::error_code ignored;  // a directory that cannot be examined counts as missing
+    if (!std::filesystem::is_directory(dir, ignored)) {
+      if (!ctx.display.dump_dir_missing_reported) {
+        ctx.display.dump_dir_missing_reported = true;
+        ctx.report(GLIDESHIM_ERR_BACKEND, std::string("grBufferSwap: GLIDESHIM_DUMP_DIR '") + dir +
+                                              "' is not an existing directory: no frames are written");
+      }
+      return;
+    }
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%05d.png", frame);
     std::string error;

@@ -66,6 +66,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   display.color_format = format;
   display.gamma = 1.7f;
   display.swaps = 0;
+  display.dump_dir_missing_reported = false;
 
   lfb = LfbLockState{};
   fog = FogState{GR_FOG_DISABLE, 0, {}};

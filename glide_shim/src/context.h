@@ -9,9 +9,11 @@
 
 #include "glide_shim.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace glide_shim {
@@ -143,6 +145,7 @@ struct DisplayState {
   GrColorFormat_t color_format;
   float gamma;
   int swaps;  // frames shown so far, for the frame dump's file names
+  bool dump_dir_missing_reported;  // GLIDESHIM_DUMP_DIR named no directory: said once per window
   int none_width = 640, none_height = 480;  // the size GR_RESOLUTION_NONE opens
 };
 
@@ -184,11 +187,22 @@ struct PerfStatsState {
   FxU32 triangles_drawn;      // and those left after culling and zero-area rejection
 };
 
+// Without a callback each distinct message (the same text) goes to stderr once per process,
+// as 3dfx's driver printed its errors; at most kMaxPrintedErrors of them, so that a program
+// that fails with a new coordinate every frame neither floods stderr nor grows this set.
+constexpr std::size_t kMaxPrintedErrors = 64;
+
 struct ErrorState {
   GrErrorCallbackFnc_t callback;
   GlideShimError last;
   std::string message;
+  std::unordered_set<std::string> printed;  // messages already written to stderr
+  bool print_limit_reached;                 // said once that no more are printed
+  bool printed_without_memory;              // the one line report_exception prints unallocated
 };
+
+// GLIDESHIM_QUIET set to anything but "" or "0": errors without a callback are not printed.
+bool errors_quiet();
 
 // The gu texture manager (guTexAllocateMemory and friends, gu_texture_manager.cpp): digutex.c's
 // mip-map table, the TMU's free-memory pointer and guTexSource's NCC-table bookkeeping.
@@ -234,7 +248,8 @@ class GlideContext {
   // Loads the defaults grSstWinOpen establishes (gsst.c), group by group.
   void load_window_defaults(int width, int height, GrColorFormat_t format, GrOriginLocation_t o);
 
-  // Records an error: kept as the last error and sent once to the grErrorSetCallback callback.
+  // Records an error: kept as the last error and sent once to the grErrorSetCallback callback,
+  // or, with none installed, printed to stderr unless printed before or GLIDESHIM_QUIET is set.
   void report(GlideShimError kind, const std::string &message);
   // Guard for entry points that need an open window; reports and returns false otherwise.
   bool require_open(const char *function);

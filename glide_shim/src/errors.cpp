@@ -1,6 +1,11 @@
 // Error reporting: every rejected call records one error kind with a message naming the problem,
-// keeps it as the last error, and hands it once to the program's grErrorSetCallback callback.
+// keeps it as the last error, and hands it once to the program's grErrorSetCallback callback;
+// without a callback, each distinct message is printed once to stderr (GLIDESHIM_QUIET silences).
 #include "context.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
@@ -42,10 +47,30 @@ const char *glideShimErrorName(GlideShimError error) {
 
 namespace glide_shim {
 
+bool errors_quiet() {
+  const char *quiet = std::getenv("GLIDESHIM_QUIET");
+  return quiet != nullptr && *quiet != '\0' && std::strcmp(quiet, "0") != 0;
+}
+
 void GlideContext::report(GlideShimError kind, const std::string &message) {
   errors.last = kind;
   errors.message = message;
-  if (errors.callback != nullptr) errors.callback(errors.message.c_str(), FXFALSE);
+  if (errors.callback != nullptr) {
+    errors.callback(errors.message.c_str(), FXFALSE);
+    return;
+  }
+  if (errors_quiet() || errors.printed.count(message) != 0) return;
+  if (errors.printed.size() >= kMaxPrintedErrors) {
+    if (!errors.print_limit_reached) {
+      std::fprintf(stderr, "glide_shim: %zu different errors printed; further ones are not\n",
+                   kMaxPrintedErrors);
+      errors.print_limit_reached = true;
+    }
+    return;
+  }
+  errors.printed.insert(message);
+  std::fprintf(stderr, "glide_shim: %s [%s]\n", message.c_str(),
+               glide_shim_api::glideShimErrorName(kind));
 }
 
 bool GlideContext::require_open(const char *function) {

@@ -1,6 +1,7 @@
 // The reporting half of the exception barrier (exception_barrier.h).
 #include "exception_barrier.h"
 
+#include <cstdio>
 #include <string>
 
 namespace glide_shim {
@@ -23,6 +24,11 @@ void report_exception(const char *function, GlideShimError kind, const char *wha
     } catch (...) {
       // A C++ program's callback threw: the error stays recorded for glideShimGetLastError.
     }
+  } else if (!errors.printed_without_memory && !errors_quiet()) {
+    // The one line this path prints (it cannot remember messages without allocating).
+    std::fprintf(stderr, "glide_shim: %s: %s [%s]\n", function, errors.message.c_str(),
+                 ::glideShimErrorName(kind));
+    errors.printed_without_memory = true;
   }
 }
 

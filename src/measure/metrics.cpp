@@ -226,7 +226,7 @@ ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<st
 }
 
 bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
-               std::string &error) {
+               std::string &error, bool *black_and_white) {
   OIIO::ImageBuf buf;
   if (!read_image(path, buf, error)) return false;
   const OIIO::ImageSpec &spec = buf.spec();
@@ -236,9 +236,22 @@ bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &wi
   std::vector<float> pixels(std::size_t(spec.width) * spec.height * nc);
   buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, pixels.data());
   mask.assign(std::size_t(spec.width) * spec.height, 0);
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    for (int c = 0; c < nc; ++c)
-      if (c != alpha && pixels[i * nc + c] > 0.5f) mask[i] = 1;
+  // Two levels: black (every colour channel 0) and one grey above half shared by all other
+  // pixels. `render --mask` writes its white through the shim's gamma table as 254, `truth` 255.
+  bool two_levels = true;
+  float white = -1.0f;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    const float first = pixels[i * nc + (alpha == 0 ? 1 : 0)];
+    for (int c = 0; c < nc; ++c) {
+      if (c == alpha) continue;
+      if (pixels[i * nc + c] > 0.5f) mask[i] = 1;
+      if (pixels[i * nc + c] != first) two_levels = false;  // not grey
+    }
+    if (first == 0.0f) continue;
+    if (first <= 0.5f || (white >= 0.0f && first != white)) two_levels = false;
+    white = first;
+  }
+  if (black_and_white != nullptr) *black_and_white = two_levels;
   width = spec.width;
   height = spec.height;
   return true;

@@ -41,8 +41,10 @@ bool compare_images(const std::string &a, const std::string &b, const std::strin
 ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
                         int width, int height);
 
-// Reads a mask PNG (any pixel with a channel above half is 1).
+// Reads a mask PNG (any pixel with a channel above half is 1). With `black_and_white`, also says
+// whether the image is a mask as `render --mask` and `truth` write them: every pixel either black
+// or one grey above half that all the others share (colour channels equal; alpha ignored).
 bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
-               std::string &error);
+               std::string &error, bool *black_and_white = nullptr);
 
 }  // namespace gs

@@ -324,6 +324,33 @@ TEST(ReadMask, ChannelAboveHalfIsShadowAlphaIgnored) {
   EXPECT_EQ(mask, (std::vector<std::uint8_t>{0, 1, 0, 1}));
 }
 
+// What `glideshadows compare` treats as a mask: black and one grey above half, shared.
+TEST(ReadMask, BlackAndWhiteIsBlackAndOneSharedGreyAboveHalf) {
+  struct Case {
+    const char *name;
+    std::vector<std::uint8_t> rgb;  // 2x1 pixels
+    bool black_and_white;
+  };
+  const Case cases[] = {
+      {"truth's 0/255", {0, 0, 0, 255, 255, 255}, true},
+      {"render's 0/254", {254, 254, 254, 0, 0, 0}, true},
+      {"all black", {0, 0, 0, 0, 0, 0}, true},
+      {"two greys", {254, 254, 254, 255, 255, 255}, false},
+      {"a colour", {0, 0, 0, 255, 0, 0}, false},
+      {"a dark grey", {0, 0, 0, 100, 100, 100}, false},
+  };
+  for (const Case &c : cases) {
+    const std::string path = temp_path("two_levels.png");
+    write_png(path, 2, 1, 3, c.rgb);
+    std::vector<std::uint8_t> mask;
+    int w = 0, h = 0;
+    bool black_and_white = !c.black_and_white;
+    std::string error;
+    ASSERT_TRUE(read_mask(path, mask, w, h, error, &black_and_white)) << error;
+    EXPECT_EQ(black_and_white, c.black_and_white) << c.name;
+  }
+}
+
 TEST(ReadMask, ReportsMissingFileByName) {
   const std::string missing = temp_path("no_mask.png");
   std::vector<std::uint8_t> mask;
