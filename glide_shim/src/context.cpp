@@ -2,6 +2,10 @@
 #include "context.h"
 
 #include "gl/gl_renderer.h"
+#include "gl/shader_source.h"
+
+#include <cstdlib>
+#include <cstring>
 
 namespace glide_shim {
 
@@ -70,6 +74,9 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   perf = PerfStatsState{};
   texture_target = TextureTarget{};
   plain_gl = false;
+  const char *exact = std::getenv("GLIDESHIM_EXACT");
+  fast_paths = !(exact != nullptr && std::strcmp(exact, "1") == 0);
+  fidelity_knobs = parse_fidelity_knobs(std::getenv("GLIDESHIM_PLAIN_GL"));
 }
 
 void GlideContext::flush() {

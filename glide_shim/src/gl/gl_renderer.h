@@ -122,6 +122,9 @@ class GlRenderer {
   unsigned query_ = 0;
   std::uint32_t pixels_counted_ = 0;
   bool disjoint_ = false;  // flush_disjoint is drawing
+  // No plain GL code (glideShimBeginGL) has drawn into the frame buffer yet, so its stencil
+  // holds nothing but zeros (see clear()).
+  bool stencil_untouched_ = true;
 };
 
 }  // namespace glide_shim
