@@ -145,7 +145,7 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(key), error) : 0;
   if (vs != 0 && fs == 0 && key.fast) {
     // A context without GLSL 1.30 gets the exact program under the fast key: the same bytes.
-    PipelineKey exact = key;
+    PipelineKey exact = key.without_sources();
     exact.fast = exact.texel_fetch = false;
     fs = compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(exact), error);
   }
@@ -344,7 +344,10 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
 void GlRenderer::flush() {
   if (queue_.empty()) return;
   const GlFunctions &gl = backend_->gl;
-  const PipelineKey key = pipeline_key(context_, context_.fast_paths);
+  PipelineKey key = pipeline_key(context_, context_.fast_paths);
+  if (key.sources && programs_.count(key.defines()) == 0 && ++states_seen_[key.defines()] < 2) {
+    key = key.without_sources();  // compiled in once the state is drawn again
+  }
   const ShaderProgram *program = program_for(key);
   if (program == nullptr) {
     queue_.clear();

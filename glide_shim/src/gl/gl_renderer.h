@@ -110,6 +110,7 @@ class GlRenderer {
   Primitive primitive_ = Primitive::Triangles;
   std::vector<ShimVertex> queue_;
   std::map<std::string, ShaderProgram> programs_;
+  std::map<std::string, int> states_seen_;  // fast keys drawn so far without their program
   TextureCache textures_;
   bool counting_ = false;
   unsigned drawing_program_ = 0;  // the program use_program bound last

@@ -418,7 +418,7 @@ PipelineKey pipeline_key(const GlideContext &context, bool fast) {
   key.fog = context.fog.mode & 0xFF;
   key.plain = context.fidelity_knobs;
   if (fast) {
-    key.fast = true;
+    key.fast = key.sources = true;
     key.texel_fetch = key.texture && context.tmu.source.valid;
     const int height = context.texture_target.active ? context.texture_target.side
                                                      : context.display.height;
@@ -437,6 +437,14 @@ PipelineKey pipeline_key(const GlideContext &context, bool fast) {
   return key;
 }
 
+PipelineKey PipelineKey::without_sources() const {
+  PipelineKey key = *this;
+  key.sources = false;
+  key.color_local = key.color_other = key.alpha_local = key.alpha_other = 0;
+  key.color_invert = key.alpha_invert = key.tmu_rgb_invert = key.tmu_alpha_invert = false;
+  return key;
+}
+
 std::string PipelineKey::defines() const {
   std::ostringstream s;
   for (const UnitShape *unit : {&color, &alpha, &tmu_rgb, &tmu_alpha}) {
@@ -447,8 +455,9 @@ std::string PipelineKey::defines() const {
     << " itrgb " << alpha_controls_itrgb << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither << " fog " << fog;
   if (plain != 0) s << " plain " << plain;
-  if (fast) {
-    s << " fast " << texel_fetch << rows_mod4 << " sources " << color_local << color_other << color_invert
+  if (fast) s << " fast " << texel_fetch << rows_mod4;
+  if (sources) {
+    s << " sources " << color_local << color_other << color_invert
       << alpha_local << alpha_other << alpha_invert << tmu_rgb_invert << tmu_alpha_invert;
   }
   return s.str();
@@ -496,21 +505,21 @@ std::string fragment_shader_source(const PipelineKey &key) {
          "  vec4 texel = sample_tmu(tex_lod);\n"
       << lod_factor_code(key)
       << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
-                      "0.0", !key.fast ? "u_tmu_invert.x" : key.tmu_rgb_invert ? "!" : "", plain_combine)
+                      "0.0", !key.sources ? "u_tmu_invert.x" : key.tmu_rgb_invert ? "!" : "", plain_combine)
       << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",
-                      !key.fast ? "u_tmu_invert.y" : key.tmu_alpha_invert ? "!" : "", plain_combine)
+                      !key.sources ? "u_tmu_invert.y" : key.tmu_alpha_invert ? "!" : "", plain_combine)
       << "  vec4 tex = vec4(tmu_rgb, tmu_a);\n";
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
   }
   if (key.alpha_controls_itrgb) {  // grAlphaControlsITRGBLighting: texture alpha bit 7
     s << "  vec3 c_local = tex.a >= 128.0 ? u_constant.rgb : it.rgb;\n";
-  } else if (key.fast) {
+  } else if (key.sources) {
     s << "  vec3 c_local = " << fast_local(key.color_local, true) << ";\n";
   } else {
     s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_select.x);\n";
   }
-  if (key.fast) {
+  if (key.sources) {
     s << "  vec3 c_other = " << fast_other(key.color_other, true) << ";\n"
       << "  float a_local = " << fast_local(key.alpha_local, false) << ";\n"
       << "  float a_other = " << fast_other(key.alpha_other, false) << ";\n";
@@ -525,13 +534,13 @@ std::string fragment_shader_source(const PipelineKey &key) {
     s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on 'other'\n";
   }
   s << combine_code("rgb", key.color, true, true, "c_local", "c_other", "a_local", "a_other",
-                    !key.fast ? "u_color_select.y" : key.color_invert ? "!" : "", plain_combine);
+                    !key.sources ? "u_color_select.y" : key.color_invert ? "!" : "", plain_combine);
   // The alpha combine's result reaches the pixel only through the alpha test and blending: a
   // 565 buffer has no alpha planes. The fast paths leave it out when neither is on.
   const bool alpha_seen = !key.fast || key.blending || key.alpha_test != GR_CMP_ALWAYS;
   if (alpha_seen) {
     s << combine_code("alpha", key.alpha, false, true, "a_local", "a_other", "a_local", "a_other",
-                      !key.fast ? "u_alpha_select.y" : key.alpha_invert ? "!" : "", plain_combine);
+                      !key.sources ? "u_alpha_select.y" : key.alpha_invert ? "!" : "", plain_combine);
   } else {
     s << "  float alpha = 255.0;  // not observable: no alpha test, no blending\n";
   }

@@ -53,6 +53,10 @@ struct PipelineKey {
   // texelFetch (GLSL 1.30). Off, the program is the exact path's, unchanged.
   bool fast = false;
   bool texel_fetch = false;  // fast, and the TMU has a source (texelFetch of a real texture)
+  // Fast, with the sources below compiled in. A state sweep (a test of every combine setting)
+  // would compile a program per setting, so the renderer compiles them in only for a state
+  // drawn a second time; the first time the sources stay uniforms (without_sources()).
+  bool sources = false;
   int rows_mod4 = 0;         // fast dither: the target's height & 3
   // Compiled-in sources, as unit_uniforms selects them (fast only; zero otherwise):
   // local 1 = constant, other 0/1/2 = iterated/texture/constant.
@@ -63,6 +67,7 @@ struct PipelineKey {
   // plain GL does, for measuring what each costs and how far the picture moves without it.
   int plain = 0;  // kPlain* bits
 
+  PipelineKey without_sources() const;
   std::string defines() const;  // also the cache key
 };
 
