@@ -1,8 +1,9 @@
 // `glideshadows demo`: the fight headless to PNG frames, optionally a contact sheet and a GIF,
-// then the step table.
+// then the step table; with --window, the fight played in a window instead (fight_window.h).
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "fight_demo.h"
+#include "fight_window.h"
 #include "media/media.h"
 
 #include <glide.h>
@@ -18,9 +19,11 @@ namespace gs::cli {
 namespace {
 
 struct DemoOptions {
-  int frames = 48, fps = 30, shadow_size = 256;
+  int frames = 96, fps = 12, shadow_size = 256;
   std::string size = "640x480", out_dir = "out/demo";
   bool gif = false, sheet = false;
+  bool window = false, paused = false;
+  bool frames_given = false;  // --frames on the command line (the window then stops after them)
   TechniqueChoice choice;
   demo::DemoBeam beam;
 };
@@ -40,9 +43,19 @@ int run_demo(const DemoOptions &o) {
   settings.shadow_size = o.shadow_size;
   settings.beam = o.beam;
   settings.out_dir = o.out_dir;
+  const TechniqueOptions options = technique_options(o.choice, o.shadow_size);
+  settings.shadow_options = options.projected;
+  if (o.window) {
+    demo::WindowSettings window;
+    window.demo = settings;
+    window.technique = o.choice.name;
+    window.options = options;
+    window.start_paused = o.paused;
+    window.max_frames = o.frames_given ? o.frames : 0;
+    return demo::play_fight_in_window(window, stdout);
+  }
   std::string error;
-  std::unique_ptr<ShadowTechnique> technique =
-      make_technique(o.choice.name, technique_options(o.choice, o.shadow_size), error);
+  std::unique_ptr<ShadowTechnique> technique = make_technique(o.choice.name, options, error);
   if (!technique) {
     std::fprintf(stderr, "glideshadows demo: %s\n", error.c_str());
     return 2;
@@ -58,6 +71,10 @@ int run_demo(const DemoOptions &o) {
   for (const std::string &w : run.warnings) std::fprintf(stderr, "glideshadows demo: warning: %s\n", w.c_str());
   std::printf("glideshadows demo: %d frames %dx%d, technique %s, shadow texture %d, in %s/frame_NNNN.png\n",
               o.frames, settings.width, settings.height, o.choice.name.c_str(), o.shadow_size, o.out_dir.c_str());
+  if (o.choice.name.rfind("projected", 0) == 0) {
+    std::printf("shadow texture sides%s: %s\n", o.choice.auto_size ? " (--auto-size, per fighter and frame)" : "",
+                demo::describe_texture_sizes(run.texture_sizes).c_str());
+  }
   const std::vector<std::string> table = demo::step_table(run.reports);
   if (!table.empty()) std::printf("\n");
   for (const std::string &line : table) std::printf("%s\n", line.c_str());
@@ -85,7 +102,9 @@ int run_demo(const DemoOptions &o) {
 Command add_demo_command(CLI::App &app) {
   auto o = std::make_shared<DemoOptions>();
   CLI::App *demo = app.add_subcommand("demo", "render the fighting-game demo to PNG frames and print the step timing");
-  demo->add_option("--frames", o->frames, "number of frames")->check(CLI::Range(1, 100000))->capture_default_str();
+  // An option given twice takes its last value, so arguments after run.sh's defaults override them.
+  demo->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  demo->add_option("--frames", o->frames, "number of frames (the default is one 8-second fight loop)")->check(CLI::Range(1, 100000))->capture_default_str();
   demo->add_option("--size", o->size, "screen size WxH")->capture_default_str();
   demo->add_option("--out", o->out_dir, "directory for frame_NNNN.png (an earlier run's frames there are removed)")
       ->capture_default_str();
@@ -99,7 +118,19 @@ Command add_demo_command(CLI::App &app) {
                    "the spotlight's attenuation with distance: none, vertex or exact (needs --beam)")
       ->check(CLI::IsMember({"none", "vertex", "exact"}))
       ->capture_default_str();
-  return {demo, [o] { return run_demo(*o); }};
+  demo->add_flag("--window", o->window,
+                 "play the fight in a window (SDL2) instead of writing frames; --frames then stops "
+                 "after that many frames. Keys below");
+  demo->add_flag("--paused", o->paused, "with --window: start paused on the first frame")
+      ->needs(demo->get_option("--window"));
+  std::string keys = "Keys in the --window:\n";
+  for (const std::string &line : demo::window_key_help()) keys += "  " + line + "\n";
+  demo->footer(keys);
+  CLI::Option *frames = demo->get_option("--frames");
+  return {demo, [o, frames] {
+            o->frames_given = frames->count() > 0;
+            return run_demo(*o);
+          }};
 }
 
 }  // namespace gs::cli

@@ -1,5 +1,7 @@
+// The demo driver (fight_demo.h): the fight at each frame's time, through the technique, to PNG.
 #include "fight_demo.h"
 
+#include "figures/figures_kit.h"
 #include "measure/speed_error.h"
 #include "media/media.h"
 #include "scene/fight_scene.h"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <unistd.h>
 
 namespace gs::demo {
@@ -33,26 +36,64 @@ void report_progress(int done, int total, bool tty) {
 
 }  // namespace
 
+Scene demo_scene_at(FightScene &fight, const DemoSettings &settings, float time) {
+  Scene scene = fight.at(time);
+  if (!settings.beam.beam.empty() || settings.beam.attenuation != "none") {
+    apply_beam(settings.beam, scene.lights.front());
+  }
+  return scene;
+}
+
+Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int index) {
+  return demo_scene_at(fight, settings, static_cast<float>(index) / static_cast<float>(settings.fps));
+}
+
+std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options) {
+  std::vector<int> sizes;
+  for (std::size_t fighter : FightScene::kFighters) {
+    const LightView view = fit_light_view(scene, fighter, 0, options);
+    sizes.push_back(view.usable ? view.size : 0);
+  }
+  return sizes;
+}
+
+InterFighterShadow measure_inter_fighter_shadow(ShadowTechnique &technique, const Scene &scene) {
+  technique.render(scene, false);
+  technique.render_mask(scene);
+  const figures::Mask mask = figures::non_zero(figures::read_back(scene.width, scene.height));
+  InterFighterShadow result;
+  for (int i = 0; i < 2; ++i) {
+    result.pixels[i] = figures::count_both(mask, figures::coverage(scene, FightScene::kFighters[i]));
+  }
+  result.share = static_cast<double>(result.pixels[0] + result.pixels[1]) /
+                 (static_cast<double>(scene.width) * static_cast<double>(scene.height));
+  return result;
+}
+
+std::string describe_texture_sizes(const std::vector<int> &sizes) {
+  std::map<int, int> frames_of_size;
+  for (int size : sizes) ++frames_of_size[size];
+  std::string text;
+  for (const auto &[size, count] : frames_of_size) {
+    if (!text.empty()) text += ", ";
+    text += std::to_string(size) + " in " + std::to_string(count) + " textures";
+  }
+  return text;
+}
+
 bool render_fight(const DemoSettings &settings, ShadowTechnique &technique, DemoRun &run,
                   std::string &error) {
   if (!media::prepare_frame_directory(settings.out_dir, error)) return false;
   FightScene fight(settings.width, settings.height, settings.shadow_size);
-  const bool beamed = !settings.beam.beam.empty() || settings.beam.attenuation != "none";
   const bool tty = isatty(fileno(stderr)) != 0;
   for (int i = 0; i < settings.frames; ++i) {
-    const Scene &fight_frame = fight.at(static_cast<float>(i) / static_cast<float>(settings.fps));
-    const Scene *scene = &fight_frame;
-    Scene with_beam;  // a copy only when the spotlight changes
-    if (beamed) {
-      with_beam = fight_frame;
-      apply_beam(settings.beam, with_beam.lights.front());
-      scene = &with_beam;
-    }
-    const FrameReport frame = technique.render(*scene, true);
+    const Scene scene = demo_frame_scene(fight, settings, i);
+    const FrameReport frame = technique.render(scene, true);
     if (i > 0) run.reports.push_back(frame);
     for (const std::string &w : frame.warnings) {
       if (std::find(run.warnings.begin(), run.warnings.end(), w) == run.warnings.end()) run.warnings.push_back(w);
     }
+    for (int size : fighter_texture_sizes(scene, settings.shadow_options)) run.texture_sizes.push_back(size);
     grBufferSwap(1);
     const std::string path = media::frame_path(settings.out_dir, i);
     if (!glideShimWritePng(GR_BUFFER_FRONTBUFFER, path.c_str())) {

@@ -3,6 +3,7 @@
 // article's five step times collected for a table. The command-line face is demo_command.cpp.
 #pragma once
 
+#include "scene/fight_scene.h"
 #include "techniques/technique.h"
 
 #include <string>
@@ -17,10 +18,11 @@ struct DemoBeam {
 };
 
 struct DemoSettings {
-  int frames = 48;
+  int frames = 96;
   int width = 640, height = 480;  // screen, pixels
-  int fps = 30;                   // frames per second of fight time
+  int fps = 12;                   // frames per second of fight time: 96 frames, one 8 s loop
   int shadow_size = 256;
+  ProjectedShadowOptions shadow_options;  // the technique's, for reporting texture sizes
   DemoBeam beam;
   std::string out_dir = "out/demo";
 };
@@ -29,7 +31,31 @@ struct DemoRun {
   std::vector<std::string> frame_files;  // in order
   std::vector<FrameReport> reports;      // every frame but the first (llvmpipe's compiles)
   std::vector<std::string> warnings;     // each once
+  std::vector<int> texture_sizes;        // per frame, the red and the blue fighter's shadow
+                                         // texture sides (what --auto-size chose), interleaved
 };
+
+// The fight at `time` seconds with the chosen beam; frame `index` of a run is at index / fps.
+Scene demo_scene_at(FightScene &fight, const DemoSettings &settings, float time);
+Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int index);
+
+// The side of each fighter's shadow texture under the first light in `scene`, as the projected
+// technique fits it (with options.auto_size, from the fighter's size on screen); 0 for a fighter
+// the light cannot give a shadow.
+std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options);
+
+// How much of the frame shows one fighter's shadow on the other: `technique` renders `scene`
+// (in the open window, into the back buffer) and its shadow mask is counted on the pixels where
+// a fighter is the visible surface. The projected techniques never shadow a caster with its own
+// texture, so every such pixel lies in the other fighter's shadow.
+struct InterFighterShadow {
+  long pixels[2] = {0, 0};  // shadowed pixels on the red and on the blue fighter
+  double share = 0.0;       // their sum over the frame's pixels
+};
+InterFighterShadow measure_inter_fighter_shadow(ShadowTechnique &technique, const Scene &scene);
+
+// "128 in 40 frames, 256 in 56 frames": the texture sides of a run, for the summary.
+std::string describe_texture_sizes(const std::vector<int> &sizes);
 
 // Renders the frames through `technique` (the Glide window must be open, width x height) into
 // out_dir as frame_NNNN.png after clearing the earlier run's frames there. Progress goes to

@@ -1,7 +1,5 @@
 // glide_api_fuzz: decodes its input into a sequence of Glide 2.x calls with random arguments
-// (state setters, texture downloads, LFB locks and region copies, draws with random vertices
-// including NaN and infinities, clears, swaps, window close and reopen) on a small window, and
-// after every call checks what must hold whatever the arguments were:
+// and after every call checks what must hold whatever the arguments were:
 //   - a call that reported an error left every state group of the context as it was;
 //   - an error is never reported without a message, and the callback saw the same message;
 //   - the open window's groups stay in range (clip inside the target, TMU memory whole, LFB
@@ -9,14 +7,27 @@
 //   - round trips: 565 words written with grLfbWriteRegion read back unchanged,
 //     grTexTextureMemRequired agrees with grTexCalcMemRequired for the same texture, restoring
 //     grGlideGetState's block changes nothing, and grSstScreenWidth/Height give the window's size;
-//   - a polygon with a vertex count far beyond its array (over 65,536) is refused unread.
+//   - a polygon with a vertex count far beyond its array (over 65,536) is refused unread;
+//   - the gu texture manager never hands out memory past the TMU's end or an id twice.
 // Any violation aborts, which libFuzzer reports as a crash with the input that caused it.
+//
+// Speed: one window (GL context) serves the whole run. Between inputs the context is reset to
+// what grSstWinOpen loads (reset_window below), so the renderer and its compiled shaders are
+// kept; only an input that asks for another window size, or that closes the window, pays for a
+// new GL context. Every public entry point of glide.h, glideutl.h and glide_shim.h is called
+// (entry point table in fuzz/README.md).
 #include "context.h"
+#include "gl/gl_renderer.h"
 
 #include <fuzzer/FuzzedDataProvider.h>
 #include <glide.h>
 #include <glide_shim.h>
+#include <glideutl.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -77,15 +88,41 @@ bool same(const glide_shim::TextureTarget &a, const glide_shim::TextureTarget &b
 }
 bool same(const glide_shim::TextureSource &a, const glide_shim::TextureSource &b) {
   return a.valid == b.valid && a.address == b.address && a.small_lod == b.small_lod &&
-         a.large_lod == b.large_lod && a.aspect == b.aspect && a.format == b.format;
+         a.large_lod == b.large_lod && a.aspect == b.aspect && a.format == b.format &&
+         a.even_odd == b.even_odd;
+}
+bool same(const glide_shim::TextureTables &a, const glide_shim::TextureTables &b) {
+  return std::memcmp(a.palette, b.palette, sizeof a.palette) == 0 &&
+         std::memcmp(a.ncc, b.ncc, sizeof a.ncc) == 0 && a.ncc_select == b.ncc_select;
 }
 bool same(const glide_shim::TmuState &a, const glide_shim::TmuState &b) {
   return a.clamp_s == b.clamp_s && a.clamp_t == b.clamp_t && a.min_filter == b.min_filter &&
          a.mag_filter == b.mag_filter && a.mipmap_mode == b.mipmap_mode &&
          a.lod_blend == b.lod_blend && same(a.lod_bias, b.lod_bias) && a.combine == b.combine &&
          a.detail_bias == b.detail_bias && a.detail_scale == b.detail_scale &&
-         a.detail_max == b.detail_max && same(a.source, b.source);
+         a.detail_max == b.detail_max && same(a.source, b.source) &&
+         a.allow_lod_dither == b.allow_lod_dither && a.lod_dither == b.lod_dither &&
+         a.multibase == b.multibase && std::memcmp(a.base, b.base, sizeof a.base) == 0;
 }
+bool same(const glide_shim::FogState &a, const glide_shim::FogState &b) {
+  return a.mode == b.mode && a.color == b.color &&
+         std::memcmp(a.table, b.table, sizeof a.table) == 0;
+}
+bool same(const glide_shim::LfbWriteLayout &a, const glide_shim::LfbWriteLayout &b) {
+  return a.color_format == b.color_format && a.swizzle_bytes == b.swizzle_bytes &&
+         a.swap_words == b.swap_words;
+}
+bool same_bookkeeping(const glide_shim::GuTextureManager &a, const glide_shim::GuTextureManager &b) {
+  return a.next_id == b.next_id && a.free_base == b.free_base && a.current == b.current &&
+         a.ncc_owner[0] == b.ncc_owner[0] && a.ncc_owner[1] == b.ncc_owner[1] &&
+         a.next_ncc_table == b.next_ncc_table;
+}
+
+// What a call may touch beyond the small groups, which every snapshot holds: TMU memory (2 MB)
+// and the gu manager's records (1024 of them) are copied only before the calls that write
+// them, and before every call of a "thorough" input (one in eight), to keep the run fast.
+enum Touches : unsigned { kSmall = 0, kMemory = 1, kGuRecords = 2, kAll = 3 };
+unsigned g_thorough = 0;  // kAll for a thorough input
 
 struct Snapshot {
   bool initialized, plain_gl;
@@ -96,13 +133,24 @@ struct Snapshot {
   glide_shim::RasterState raster;
   glide_shim::DisplayState display;
   glide_shim::TextureTarget texture_target;
-  glide_shim::TmuState tmu;  // memory included
+  glide_shim::TmuState tmu;  // without its memory, which is `memory` below
+  glide_shim::FogState fog;
+  glide_shim::GuTextureManager gu;  // records only when kGuRecords
+  GrMPState multipass;
   bool read_locked, write_locked;
   GrBuffer_t write_buffer;
   GrOriginLocation_t write_origin;
-  decltype(glide_shim::LfbLockState::write_pixels) write_pixels;
+  GrLfbWriteMode_t write_mode;
+  bool write_pipeline;
+  glide_shim::LfbWriteLayout layout;
+  GrAlpha_t constant_alpha;
+  FxU16 constant_depth;
+  std::vector<std::uint8_t> write_pixels;
+  std::vector<std::uint8_t> memory;
+  unsigned touches = kSmall;
 
-  void take(const GlideContext &ctx) {
+  void take(GlideContext &ctx, unsigned what) {
+    touches = what;
     initialized = ctx.initialized;
     plain_gl = ctx.plain_gl;
     color_path = ctx.color_path;
@@ -112,9 +160,24 @@ struct Snapshot {
     raster = ctx.raster;
     display = ctx.display;
     texture_target = ctx.texture_target;
+    // Every TMU field but the memory (swapped out and back: no copy).
+    std::vector<std::uint8_t> held;
+    held.swap(ctx.tmu.memory);
     tmu = ctx.tmu;
+    ctx.tmu.memory.swap(held);
+    if ((what & kMemory) != 0) memory.assign(ctx.tmu.memory.begin(), ctx.tmu.memory.end());
+    fog = ctx.fog;
+    std::vector<GrMipMapInfo> records;
+    records.swap(ctx.gu_textures.records);
+    gu = ctx.gu_textures;
+    ctx.gu_textures.records.swap(records);
+    if ((what & kGuRecords) != 0) gu.records = ctx.gu_textures.records;
+    multipass = ctx.multipass;
     read_locked = ctx.lfb.read_locked, write_locked = ctx.lfb.write_locked;
     write_buffer = ctx.lfb.write_buffer, write_origin = ctx.lfb.write_origin;
+    write_mode = ctx.lfb.write_mode, write_pipeline = ctx.lfb.write_pipeline;
+    layout = ctx.lfb.layout;
+    constant_alpha = ctx.lfb.constant_alpha, constant_depth = ctx.lfb.constant_depth;
     write_pixels = ctx.lfb.write_pixels;
   }
 
@@ -129,10 +192,25 @@ struct Snapshot {
     if (!same(display, ctx.display)) return "display";
     if (!same(texture_target, ctx.texture_target)) return "texture target";
     if (!same(tmu, ctx.tmu)) return "texture modes";
-    if (tmu.memory != ctx.tmu.memory) return "TMU memory";
+    if (!same(tmu.tables, ctx.tmu.tables)) return "texture tables";
+    if ((touches & kMemory) != 0 && memory != ctx.tmu.memory) return "TMU memory";
+    if (!same(fog, ctx.fog)) return "fog";
+    if (!same_bookkeeping(gu, ctx.gu_textures)) return "gu texture manager";
+    if ((touches & kGuRecords) != 0 &&
+        (gu.records.size() != ctx.gu_textures.records.size() ||
+         (!gu.records.empty() && std::memcmp(gu.records.data(), ctx.gu_textures.records.data(),
+                                             gu.records.size() * sizeof(GrMipMapInfo)) != 0)))
+      return "gu mip map records";
+    if (multipass.mmid[0] != ctx.multipass.mmid[0] || multipass.mmid[1] != ctx.multipass.mmid[1] ||
+        multipass.tc_fnc != ctx.multipass.tc_fnc)
+      return "multipass";
     if (read_locked != ctx.lfb.read_locked || write_locked != ctx.lfb.write_locked ||
-        write_buffer != ctx.lfb.write_buffer || write_origin != ctx.lfb.write_origin)
+        write_buffer != ctx.lfb.write_buffer || write_origin != ctx.lfb.write_origin ||
+        write_mode != ctx.lfb.write_mode || write_pipeline != ctx.lfb.write_pipeline)
       return "LFB locks";
+    if (!same(layout, ctx.lfb.layout) || constant_alpha != ctx.lfb.constant_alpha ||
+        constant_depth != ctx.lfb.constant_depth)
+      return "LFB write layout";
     if (write_pixels != ctx.lfb.write_pixels) return "LFB write copy";
     return nullptr;
   }
@@ -240,32 +318,115 @@ GrTexInfo texture_info(FuzzedDataProvider &in) {
 
 // ---- the window --------------------------------------------------------------------------
 
-bool open_window(FuzzedDataProvider &in) {
-  const int width = in.ConsumeIntegralInRange(1, 96);
-  const int height = in.ConsumeIntegralInRange(1, 96);
-  if (!glideShimSetWindowSize(width, height)) violated("glideShimSetWindowSize", "a valid size was refused");
+// Set when an input started the renderer's pixel counting (glideShimResetPixelsWritten), which
+// nothing turns off: the next input then opens a new window instead of resetting this one.
+bool g_renderer_counts = false;
+
+// The size most inputs use, so that their GL context (and its compiled shaders) is the run's.
+constexpr int kUsualWidth = 64, kUsualHeight = 48;
+
+struct WindowRequest {
+  int width, height;
+  GrColorFormat_t format;
+  GrOriginLocation_t origin;
+  int color_buffers, aux_buffers;
+  bool valid;
+};
+
+WindowRequest window_request(FuzzedDataProvider &in) {
+  WindowRequest r{};
+  // One input in 32 asks for a size of its own (a new GL context); the others share the run's.
+  const bool own_size = in.ConsumeIntegralInRange(0, 31) == 0;
+  r.width = own_size ? in.ConsumeIntegralInRange(1, 96) : kUsualWidth;
+  r.height = own_size ? in.ConsumeIntegralInRange(1, 96) : kUsualHeight;
   // Valid arguments seven times in eight, so that most inputs get to their calls.
   const bool careless = in.ConsumeIntegralInRange(0, 7) == 0;
-  const GrColorFormat_t format = careless ? enum_value(in, GR_COLORFORMAT_ARGB, GR_COLORFORMAT_BGRA)
-                                          : in.ConsumeIntegralInRange(GR_COLORFORMAT_ARGB, GR_COLORFORMAT_BGRA);
-  const GrOriginLocation_t origin = careless ? enum_value(in, GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT)
-                                             : in.ConsumeIntegralInRange(GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT);
-  const int color_buffers = careless ? in.ConsumeIntegralInRange(1, 4) : in.ConsumeIntegralInRange(2, 3);
-  const int aux_buffers = careless ? in.ConsumeIntegralInRange(-1, 2) : in.ConsumeIntegralInRange(0, 1);
-  const bool valid = format >= GR_COLORFORMAT_ARGB && format <= GR_COLORFORMAT_BGRA &&
-                     (origin == GR_ORIGIN_UPPER_LEFT || origin == GR_ORIGIN_LOWER_LEFT) &&
-                     color_buffers >= 2 && color_buffers <= 3 && aux_buffers >= 0 &&
-                     aux_buffers <= 1;
+  r.format = careless ? enum_value(in, GR_COLORFORMAT_ARGB, GR_COLORFORMAT_BGRA)
+                      : in.ConsumeIntegralInRange(GR_COLORFORMAT_ARGB, GR_COLORFORMAT_BGRA);
+  r.origin = careless ? enum_value(in, GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT)
+                      : in.ConsumeIntegralInRange(GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT);
+  r.color_buffers = careless ? in.ConsumeIntegralInRange(1, 4) : in.ConsumeIntegralInRange(2, 3);
+  r.aux_buffers = careless ? in.ConsumeIntegralInRange(-1, 2) : in.ConsumeIntegralInRange(0, 1);
+  r.valid = r.format >= GR_COLORFORMAT_ARGB && r.format <= GR_COLORFORMAT_BGRA &&
+            (r.origin == GR_ORIGIN_UPPER_LEFT || r.origin == GR_ORIGIN_LOWER_LEFT) &&
+            r.color_buffers >= 2 && r.color_buffers <= 3 && r.aux_buffers >= 0 &&
+            r.aux_buffers <= 1;
+  return r;
+}
+
+// grSstWinOpen with the request's arguments, checking that it opens exactly when it should.
+bool open_window(const WindowRequest &r) {
+  if (!glideShimSetWindowSize(r.width, r.height)) violated("glideShimSetWindowSize", "a valid size was refused");
   const bool already_open = glide_shim::current().display.open;
-  const FxBool opened = grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, format, origin,
-                                     color_buffers, aux_buffers);
-  if (opened && (!valid || already_open)) violated("grSstWinOpen", "bad arguments were accepted");
-  if (!opened && valid && !already_open && glide_shim::current().initialized)
+  const FxBool opened = grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, r.format, r.origin,
+                                     r.color_buffers, r.aux_buffers);
+  if (opened && (!r.valid || already_open)) violated("grSstWinOpen", "bad arguments were accepted");
+  if (!opened && r.valid && !already_open && glide_shim::current().initialized)
     violated("grSstWinOpen", glideShimGetLastErrorMessage());
-  if (opened && (grTexMinAddress(GR_TMU0) != 0 || glide_shim::current().display.width != width ||
-                 glide_shim::current().display.height != height))
+  if (opened && (grTexMinAddress(GR_TMU0) != 0 || glide_shim::current().display.width != r.width ||
+                 glide_shim::current().display.height != r.height))
     violated("grSstWinOpen", "the window is not the size asked for");
   return opened != FXFALSE;
+}
+
+// Ends what the previous input left begun (plain GL, rendering to a texture, LFB locks), so
+// that its queued work is drawn before the state is reset.
+void finish_previous_input() {
+  GlideContext &ctx = glide_shim::current();
+  if (!ctx.display.open) return;
+  if (ctx.plain_gl) glideShimEndGL();
+  if (ctx.texture_target.active) glideShimRenderToFrameBuffer();
+  if (ctx.lfb.write_locked) grLfbUnlock(GR_LFB_WRITE_ONLY, ctx.lfb.write_buffer);
+  if (ctx.lfb.read_locked) grLfbUnlock(GR_LFB_READ_ONLY, GR_BUFFER_FRONTBUFFER);
+  ctx.flush();
+}
+
+// The state reset between inputs that keep the run's window: every group back to what
+// grSstWinOpen loads (GlideContext::load_window_defaults, the same function grSstWinOpen calls),
+// the renderer's decoded textures dropped (TMU memory is zero again), guMPInit's multipass
+// state, and both colour buffers and the depth buffer cleared. The renderer itself, with its
+// compiled shaders, stays.
+void reset_window(const WindowRequest &r) {
+  GlideContext &ctx = glide_shim::current();
+  ctx.load_window_defaults(r.width, r.height, r.format, r.origin);
+  ctx.renderer->textures().invalidate(0, glide_shim::kTmuMemoryBytes);
+  guMPInit();
+  grDepthMask(FXTRUE);
+  for (const GrBuffer_t buffer : {GR_BUFFER_FRONTBUFFER, GR_BUFFER_BACKBUFFER}) {
+    grRenderBuffer(buffer);
+    grBufferClear(0, 0, 0xFFFF);
+  }
+  grDepthMask(FXFALSE);  // back to the defaults: no depth writes, drawing to the back buffer
+  grRenderBuffer(GR_BUFFER_BACKBUFFER);
+  ctx.flush();
+}
+
+// Gives the input a window as it asks: the run's, reset, when it has that size, else a new one.
+// False when the input's (careless) arguments were refused and no window is open.
+bool start_input(FuzzedDataProvider &in) {
+  GlideContext &ctx = glide_shim::current();
+  finish_previous_input();
+  grErrorSetCallback(on_error);  // as set at start-up: the callback every check reads
+  const WindowRequest r = window_request(in);
+  if (!ctx.initialized) grGlideInit();
+  const bool reusable = ctx.display.open && ctx.display.width == r.width &&
+                        ctx.display.height == r.height && !g_renderer_counts;
+  g_renderer_counts = false;
+  if (reusable) {
+    if (!r.valid) {
+      // Careless arguments with the window open: refused as "already open".
+      if (open_window(r)) violated("grSstWinOpen", "opened a second window");
+    }
+    WindowRequest usable = r;
+    if (!r.valid) usable.format = GR_COLORFORMAT_ARGB, usable.origin = GR_ORIGIN_UPPER_LEFT;
+    if (!glideShimSetWindowSize(r.width, r.height)) violated("glideShimSetWindowSize", "a valid size was refused");
+    reset_window(usable);
+    glideShimClearError();
+    return true;
+  }
+  if (ctx.display.open) grSstWinClose();
+  glideShimClearError();
+  return open_window(r);
 }
 
 // ---- invariants --------------------------------------------------------------------------
@@ -295,16 +456,24 @@ void check_open_window(const GlideContext &ctx, const char *call) {
   if (grTexMinAddress(GR_TMU0) > grTexMaxAddress(GR_TMU0) ||
       grTexMaxAddress(GR_TMU0) >= glide_shim::kTmuMemoryBytes)
     violated(call, "the TMU's address range is wrong");
+  const glide_shim::GuTextureManager &gu = ctx.gu_textures;
+  if (gu.free_base > glide_shim::kTmuMemoryBytes || gu.next_id > MAX_MIPMAPS_PER_SST ||
+      gu.records.size() != MAX_MIPMAPS_PER_SST)
+    violated(call, "the gu texture manager's bookkeeping is out of range");
+  if (gu.current != GR_NULL_MIPMAP_HANDLE && gu.current >= gu.next_id)
+    violated(call, "the current gu mip map was never allocated");
 }
 
-// Runs one call: clears the last error, snapshots the state, calls, then checks.
+// Runs one call: clears the last error, snapshots the state, calls, then checks. `touches`
+// says which large groups the call may write (Touches), for the snapshot to hold them too.
+Snapshot g_before;  // reused, so that its buffers are allocated once
+
 template <typename Call>
-void checked(const char *name, Call &&call) {
+void checked(const char *name, unsigned touches, Call &&call) {
   GlideContext &ctx = glide_shim::current();
   glideShimClearError();
   g_callback_count = 0;
-  Snapshot before;
-  before.take(ctx);
+  g_before.take(ctx, touches | g_thorough);
   call();
   const GlideShimError error = glideShimGetLastError();
   const std::string message = glideShimGetLastErrorMessage();
@@ -312,7 +481,9 @@ void checked(const char *name, Call &&call) {
     if (message.empty()) violated(name, "an error was reported without a message");
     if (g_callback_count == 0 || g_callback_message != message)
       violated(name, "the error callback did not get the error's message");
-    if (const char *group = before.differs(ctx)) {
+    if (error == GLIDESHIM_ERR_OUT_OF_MEMORY || error == GLIDESHIM_ERR_INTERNAL)
+      violated(name, ("an exception was caught: " + message).c_str());
+    if (const char *group = g_before.differs(ctx)) {
       std::fprintf(stderr, "glide_api_fuzz: %s was rejected (%s) but changed: %s\n", name,
                    message.c_str(), group);
       std::abort();
@@ -325,11 +496,22 @@ void checked(const char *name, Call &&call) {
   if (ctx.display.open && !ctx.plain_gl) check_open_window(ctx, name);
 }
 
+template <typename Call>
+void checked(const char *name, Call &&call) {
+  checked(name, kSmall, call);
+}
+
 // ---- the calls ---------------------------------------------------------------------------
 
 void lfb_round_trip(FuzzedDataProvider &in) {
   const GlideContext &ctx = glide_shim::current();
   if (!ctx.display.open || ctx.plain_gl || ctx.lfb.write_locked || ctx.texture_target.active) return;
+  // Byte swizzle and word swap (grLfbWriteColorSwizzle) move written 565 words on purpose, and
+  // ABGR or BGRA lanes (grLfbWriteColorFormat) read their red and blue fields swapped.
+  const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
+  if (layout.swizzle_bytes || layout.swap_words || layout.color_format == GR_COLORFORMAT_ABGR ||
+      layout.color_format == GR_COLORFORMAT_BGRA)
+    return;
   const auto width = static_cast<FxU32>(ctx.display.width);
   const auto height = static_cast<FxU32>(ctx.display.height);
   const FxU32 x = in.ConsumeIntegralInRange<FxU32>(0, width - 1);
@@ -377,12 +559,12 @@ void texture_memory_round_trip(FuzzedDataProvider &in) {
 // grGlideGetState then grGlideSetState of what it returned changes nothing, and a second
 // grGlideGetState returns the same bytes.
 void state_round_trip() {
-  const GlideContext &ctx = glide_shim::current();
+  GlideContext &ctx = glide_shim::current();
   if (!ctx.display.open || ctx.plain_gl) return;
   GrState first{}, second{};
   checked("grGlideGetState", [&] { grGlideGetState(&first); });
   Snapshot before;
-  before.take(ctx);
+  before.take(ctx, kSmall);
   checked("grGlideSetState", [&] { grGlideSetState(&first); });
   if (const char *group = before.differs(ctx))
     violated("grGlideSetState", (std::string("restoring the saved state changed ") + group).c_str());
@@ -420,8 +602,614 @@ void polygon(FuzzedDataProvider &in, float span) {
     violated("a polygon call", "an absurd vertex count was not refused");
 }
 
+// ---- the calls the original menu lacked: every other public entry point -----------------
+
+std::string g_scratch;  // a directory of the build tree for the files calls read and write
+GrState g_saved_state;  // grGlideGetState's block from earlier in this input
+bool g_have_saved_state = false;
+
+const char *const kFormatLines[] = {"rgb565", "argb1555", "argb4444", "i8",  "a8",   "ai44", "yiq",
+                                    "rgb332", "argb8332", "ayiq8422", "ai88", "p8", "ap88", "bogus"};
+
+// Bytes for a .3df file: mostly a plausible header (any format, LOD range and aspect) followed
+// by fuzzed bytes, sometimes only fuzzed bytes.
+std::string three_df_bytes(FuzzedDataProvider &in) {
+  std::string text;
+  if (in.ConsumeIntegralInRange(0, 7) != 0) {
+    const int small_side = 1 << in.ConsumeIntegralInRange(0, 9);
+    const int large_side = 1 << in.ConsumeIntegralInRange(0, 9);
+    text = std::string(in.ConsumeBool() ? "3df v1.1\n" : "3df v1.0\n") +
+           kFormatLines[in.ConsumeIntegralInRange<std::size_t>(0, 13)] + "\nlod range: " +
+           std::to_string(small_side) + " " + std::to_string(large_side) + "\naspect ratio: " +
+           std::to_string(1 << in.ConsumeIntegralInRange(0, 4)) + " " +
+           std::to_string(1 << in.ConsumeIntegralInRange(0, 4)) + "\n";
+  }
+  const std::size_t body = in.ConsumeIntegralInRange<std::size_t>(0, 4096);
+  const std::vector<std::uint8_t> bytes = in.ConsumeBytes<std::uint8_t>(std::min<std::size_t>(body, 256));
+  for (std::size_t i = 0; i < body; ++i)
+    text.push_back(static_cast<char>(bytes.empty() ? i : bytes[i % bytes.size()]));
+  return text;
+}
+
+void three_df(FuzzedDataProvider &in) {
+  const std::string path = g_scratch + "/input.3df";
+  const std::string bytes = three_df_bytes(in);
+  if (FILE *file = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(bytes.data(), 1, bytes.size(), file);
+    std::fclose(file);
+  }
+  const bool missing = in.ConsumeIntegralInRange(0, 15) == 0;
+  const std::string name = missing ? g_scratch + "/no_such.3df" : path;
+  Gu3dfInfo info{};
+  FxBool ok = FXFALSE;
+  checked("gu3dfGetInfo", [&] { ok = gu3dfGetInfo(in.ConsumeIntegralInRange(0, 31) == 0 ? nullptr : name.c_str(), &info); });
+  if (!ok) return;
+  if (info.mem_required > (1u << 20)) violated("gu3dfGetInfo", "mem_required is beyond any .3df chain");
+  std::vector<std::uint8_t> data(info.mem_required + 1);
+  info.data = data.data();
+  checked("gu3dfLoad", [&] { ok = gu3dfLoad(name.c_str(), &info); });
+  if (ok && info.data != data.data()) violated("gu3dfLoad", "moved the caller's data pointer");
+  // Download what was loaded, as a program would.
+  if (ok) {
+    GrTexInfo tex{info.header.small_lod, info.header.large_lod, info.header.aspect_ratio,
+                  info.header.format, info.data};
+    checked("grTexDownloadMipMap", kMemory,
+            [&] { grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &tex); });
+  }
+}
+
+// An RLE bitmap as ConvertAndDownloadRle reads it: 4 skipped bytes, one length byte per row,
+// then the rows, each normally ending in a run of 0 (with a corrupt row now and then).
+std::vector<FxU8> rle_bitmap(FuzzedDataProvider &in, long rows) {
+  std::vector<std::vector<FxU8>> row_bytes(static_cast<std::size_t>(rows));
+  for (auto &row : row_bytes) {
+    const int codes = in.ConsumeIntegralInRange(0, 12);
+    for (int i = 0; i < codes; ++i) {
+      if (in.ConsumeBool()) {
+        row.push_back(static_cast<FxU8>(0xE0 | in.ConsumeIntegralInRange(1, 31)));
+        row.push_back(in.ConsumeIntegral<FxU8>());
+      } else {
+        row.push_back(static_cast<FxU8>(in.ConsumeIntegralInRange(0, 0xDF)));
+      }
+    }
+    if (in.ConsumeIntegralInRange(0, 15) != 0) row.push_back(0xE0);  // the end code
+    if (row.size() > 255) row.resize(255);
+  }
+  std::vector<FxU8> bitmap(4, 0);
+  for (const auto &row : row_bytes) bitmap.push_back(static_cast<FxU8>(row.size()));
+  for (const auto &row : row_bytes) bitmap.insert(bitmap.end(), row.begin(), row.end());
+  return bitmap;
+}
+
+// A gu mip map id: mostly one the manager handed out, sometimes any value.
+GrMipMapId_t mip_map_id(FuzzedDataProvider &in) {
+  const FxU32 next = glide_shim::current().gu_textures.next_id;
+  if (next > 0 && in.ConsumeIntegralInRange(0, 7) != 0) return in.ConsumeIntegralInRange<FxU32>(0, next - 1);
+  return in.ConsumeBool() ? GR_NULL_MIPMAP_HANDLE : small_or_any(in, MAX_MIPMAPS_PER_SST + 2);
+}
+
+// The host bytes of mip map `id`'s whole chain, or 0 when it is no allocated id.
+std::size_t mip_map_bytes(GrMipMapId_t id) {
+  const GlideContext &ctx = glide_shim::current();
+  if (id >= ctx.gu_textures.next_id || id >= ctx.gu_textures.records.size()) return 0;
+  const GrMipMapInfo &r = ctx.gu_textures.records[id];
+  return host_chain_bytes(r.lod_min, r.lod_max, r.aspect_ratio, r.format);
+}
+
+void gu_allocate(FuzzedDataProvider &in) {
+  const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+  const FxU8 mask = static_cast<FxU8>(small_or_any(in, 4));
+  GrTexInfo info = texture_info(in);
+  const int mm = enum_value(in, GR_MIPMAP_DISABLE, GR_MIPMAP_NEAREST_DITHER);
+  const int s = enum_value(in, 0, 1), t = enum_value(in, 0, 1);
+  const int min = enum_value(in, 0, 1), mag = enum_value(in, 0, 1);
+  const float bias = coordinate(in, 8.0f);
+  const FxBool trilinear = boolean(in);
+  const FxU32 free_before = glide_shim::current().gu_textures.free_base;
+  GrMipMapId_t id = GR_NULL_MIPMAP_HANDLE;
+  checked("guTexAllocateMemory", kGuRecords, [&] {
+    id = guTexAllocateMemory(tmu, mask, 256, 256, info.format, mm, info.smallLod, info.largeLod,
+                             info.aspectRatio, s, t, min, mag, bias, trilinear);
+  });
+  const GlideContext &ctx = glide_shim::current();
+  if (id != GR_NULL_MIPMAP_HANDLE) {
+    if (id >= ctx.gu_textures.next_id) violated("guTexAllocateMemory", "an id beyond the manager's count");
+    if (ctx.gu_textures.free_base <= free_before || ctx.gu_textures.free_base > glide_shim::kTmuMemoryBytes)
+      violated("guTexAllocateMemory", "the free pointer did not advance inside TMU memory");
+  }
+}
+
+void gu_change(FuzzedDataProvider &in) {
+  const GrMipMapId_t id = mip_map_id(in);
+  auto keep_or = [&](int lo, int hi) { return in.ConsumeBool() ? -1 : enum_value(in, lo, hi); };
+  const int width = keep_or(1, 256), height = keep_or(1, 256);
+  const int fmt = keep_or(GR_TEXFMT_8BIT, GR_TEXFMT_RSVD2);
+  const int mm = keep_or(GR_MIPMAP_DISABLE, GR_MIPMAP_NEAREST_DITHER);
+  const int small = keep_or(GR_LOD_256, GR_LOD_1), large = keep_or(GR_LOD_256, GR_LOD_1);
+  const int aspect = keep_or(GR_ASPECT_8x1, GR_ASPECT_1x8);
+  const int s = keep_or(0, 1), t = keep_or(0, 1), min = keep_or(0, 1), mag = keep_or(0, 1);
+  checked("guTexChangeAttributes", kGuRecords, [&] {
+    guTexChangeAttributes(id, width, height, fmt, mm, small, large, aspect, s, t, min, mag);
+  });
+}
+
+void gu_download(FuzzedDataProvider &in) {
+  const GrMipMapId_t id = mip_map_id(in);
+  std::vector<std::uint8_t> data = texel_data(in, mip_map_bytes(id));
+  GuNccTable table{};
+  const std::vector<std::uint8_t> bytes = in.ConsumeBytes<std::uint8_t>(sizeof table);
+  if (!bytes.empty()) std::memcpy(&table, bytes.data(), bytes.size());
+  const bool null_data = in.ConsumeIntegralInRange(0, 15) == 0;
+  const bool null_table = in.ConsumeIntegralInRange(0, 7) == 0;
+  if (in.ConsumeBool()) {
+    checked("guTexDownloadMipMap", kAll, [&] {
+      guTexDownloadMipMap(id, null_data ? nullptr : data.data(), null_table ? nullptr : &table);
+    });
+    return;
+  }
+  // One level at a time, as the caller's pointer advances.
+  const GrLOD_t lod = enum_value(in, GR_LOD_256, GR_LOD_1);
+  const GlideContext &ctx = glide_shim::current();
+  std::vector<std::uint8_t> level;
+  if (id < ctx.gu_textures.next_id) {
+    const GrMipMapInfo &r = ctx.gu_textures.records[id];
+    level = texel_data(in, host_chain_bytes(lod, lod, r.aspect_ratio, r.format));
+  } else {
+    level = texel_data(in, 0);
+  }
+  const void *src = null_data ? nullptr : level.data();
+  checked("guTexDownloadMipMapLevel", kAll, [&] { guTexDownloadMipMapLevel(id, lod, &src); });
+}
+
+void lfb_layout(FuzzedDataProvider &in) {
+  const FxBool swizzle = boolean(in), swap = boolean(in);
+  checked("grLfbWriteColorSwizzle", [&] { grLfbWriteColorSwizzle(swizzle, swap); });
+  const int format = enum_value(in, GR_COLORFORMAT_ARGB, GR_COLORFORMAT_BGRA);
+  checked("grLfbWriteColorFormat", [&] { grLfbWriteColorFormat(format); });
+}
+
+void getters() {
+  const GlideContext &ctx = glide_shim::current();
+  int pending = -1;
+  FxU32 status = 0, line = 1, width = 0, height = 0;
+  FxBool busy = FXTRUE, retrace = FXFALSE;
+  checked("grBufferNumPending", [&] { pending = grBufferNumPending(); });
+  checked("grSstIsBusy", [&] { busy = grSstIsBusy(); });
+  checked("grSstStatus", [&] { status = grSstStatus(); });
+  checked("grSstVideoLine", [&] { line = grSstVideoLine(); });
+  checked("grSstVRetraceOn", [&] { retrace = grSstVRetraceOn(); });
+  checked("grSstScreenWidth", [&] { width = grSstScreenWidth(); });
+  checked("grSstScreenHeight", [&] { height = grSstScreenHeight(); });
+  if (ctx.display.open && !ctx.plain_gl) {
+    if (pending < 0 || busy != FXFALSE || retrace == FXFALSE || line != 0 || (status & 0x3F) != 0x3F)
+      violated("the status queries", "an idle board reported work or no retrace");
+    if (width != static_cast<FxU32>(ctx.display.width) || height != static_cast<FxU32>(ctx.display.height))
+      violated("grSstScreenWidth", "disagrees with the window");
+  }
+}
+
+void multipass(FuzzedDataProvider &in, float span) {
+  switch (in.ConsumeIntegralInRange(0, 3)) {
+    case 0:
+      checked("guMPInit", [] { guMPInit(); });
+      break;
+    case 1: {
+      const FxU32 function = small_or_any(in, GR_MPTEXTURECOMBINE_SUBTRACT + 1);
+      checked("guMPTexCombineFunction", [&] { guMPTexCombineFunction(function); });
+      break;
+    }
+    case 2: {
+      const GrChipID_t tmu = enum_value(in, 0, 1);
+      const GrMipMapId_t id = mip_map_id(in);
+      checked("guMPTexSource", kGuRecords, [&] { guMPTexSource(tmu, id); });
+      break;
+    }
+    default: {
+      const GrVertex a = vertex(in, span), b = vertex(in, span), c = vertex(in, span);
+      checked("guMPDrawTriangle", [&] { guMPDrawTriangle(&a, &b, &c); });
+      break;
+    }
+  }
+}
+
+// Closing the window (or the library) and opening it again: the costly path of a new GL
+// context, taken rarely so that the run stays fast.
+void close_and_reopen(FuzzedDataProvider &in) {
+  if (in.ConsumeIntegralInRange(0, 7) != 0) return;
+  if (in.ConsumeBool()) {
+    checked("grSstWinClose", [] { grSstWinClose(); });
+    if (glide_shim::current().display.open) violated("grSstWinClose", "the window is still open");
+  } else {
+    checked("grGlideShutdown", [] { grGlideShutdown(); });
+    if (glide_shim::current().display.open || glide_shim::current().initialized)
+      violated("grGlideShutdown", "the library is still open");
+    // Calls with no library open are refused, and change nothing.
+    FxU32 width = 1;
+    checked("grSstScreenWidth", [&] { width = grSstScreenWidth(); });
+    if (width != 0) violated("grSstScreenWidth", "a size with no window open");
+    checked("grGlideInit", [] { grGlideInit(); });
+  }
+  if (in.ConsumeBool()) {
+    WindowRequest r = window_request(in);
+    open_window(r);
+  }
+}
+
+// A textured triangle as a program draws one: a valid mip map downloaded and made the source,
+// a texture combine and colour combine that read it, random filtering, clamping and mip-mapping,
+// so that draws go through the texture cache and every format's decoding.
+void textured_draw(FuzzedDataProvider &in, float span) {
+  static constexpr GrTextureFormat_t kFormats[] = {
+      GR_TEXFMT_RGB_332,   GR_TEXFMT_YIQ_422,   GR_TEXFMT_ALPHA_8,          GR_TEXFMT_INTENSITY_8,
+      GR_TEXFMT_ALPHA_INTENSITY_44, GR_TEXFMT_P_8, GR_TEXFMT_ARGB_8332,     GR_TEXFMT_AYIQ_8422,
+      GR_TEXFMT_RGB_565,   GR_TEXFMT_ARGB_1555, GR_TEXFMT_ARGB_4444, GR_TEXFMT_ALPHA_INTENSITY_88,
+      GR_TEXFMT_AP_88};
+  GrTexInfo info{};
+  info.largeLod = in.ConsumeIntegralInRange(GR_LOD_256, GR_LOD_1);
+  info.smallLod = in.ConsumeIntegralInRange(info.largeLod, GR_LOD_1);
+  info.aspectRatio = in.ConsumeIntegralInRange(GR_ASPECT_8x1, GR_ASPECT_1x8);
+  info.format = kFormats[in.ConsumeIntegralInRange<std::size_t>(0, 12)];
+  std::vector<std::uint8_t> data =
+      texel_data(in, host_chain_bytes(info.smallLod, info.largeLod, info.aspectRatio, info.format));
+  info.data = data.data();
+  const FxU32 address = in.ConsumeIntegralInRange<FxU32>(0, 15) * 65536u;
+  checked("grTexDownloadMipMap", kMemory,
+          [&] { grTexDownloadMipMap(GR_TMU0, address, GR_MIPMAPLEVELMASK_BOTH, &info); });
+  checked("grTexSource", [&] { grTexSource(GR_TMU0, address, GR_MIPMAPLEVELMASK_BOTH, &info); });
+  const int texture_combine = in.ConsumeIntegralInRange(GR_TEXTURECOMBINE_DECAL, GR_TEXTURECOMBINE_ONE);
+  checked("guTexCombineFunction", [&] { guTexCombineFunction(GR_TMU0, texture_combine); });
+  const int color_combine = in.ConsumeIntegralInRange(GR_COLORCOMBINE_DECAL_TEXTURE,
+                                                      GR_COLORCOMBINE_TEXTURE_TIMES_ALPHA_ADD_ITRGB);
+  checked("guColorCombineFunction", [&] { guColorCombineFunction(color_combine); });
+  const int filter = in.ConsumeIntegralInRange(0, 1), clamp = in.ConsumeIntegralInRange(0, 1);
+  checked("grTexFilterMode", [&] { grTexFilterMode(GR_TMU0, filter, filter); });
+  checked("grTexClampMode", [&] { grTexClampMode(GR_TMU0, clamp, clamp); });
+  const int mipmap = in.ConsumeIntegralInRange(GR_MIPMAP_DISABLE, GR_MIPMAP_NEAREST_DITHER);
+  checked("grTexMipMapMode", [&] { grTexMipMapMode(GR_TMU0, mipmap, FXFALSE); });
+  const GrVertex a = vertex(in, span), b = vertex(in, span), c = vertex(in, span);
+  checked("grDrawTriangle", [&] { grDrawTriangle(&a, &b, &c); });
+}
+
+void more_calls(FuzzedDataProvider &in, float span) {
+  GlideContext &ctx = glide_shim::current();
+  switch (in.ConsumeIntegralInRange(0, 42)) {
+    case 0: {
+      const GrVertex v = vertex(in, span);
+      checked("grAADrawPoint", [&] { grAADrawPoint(in.ConsumeIntegralInRange(0, 31) == 0 ? nullptr : &v); });
+      break;
+    }
+    case 1: {
+      const GrVertex a = vertex(in, span), b = vertex(in, span);
+      checked("grAADrawLine", [&] { grAADrawLine(&a, &b); });
+      break;
+    }
+    case 2: {
+      const GrVertex a = vertex(in, span), b = vertex(in, span), c = vertex(in, span);
+      checked("guAADrawTriangleWithClip", [&] { guAADrawTriangleWithClip(&a, &b, &c); });
+      break;
+    }
+    case 3:
+      getters();
+      break;
+    case 4: {
+      GrHwConfiguration config{};
+      const bool null = in.ConsumeIntegralInRange(0, 7) == 0;
+      checked("grSstQueryBoards", [&] { grSstQueryBoards(null ? nullptr : &config); });
+      checked("grSstQueryHardware", [&] { grSstQueryHardware(null ? nullptr : &config); });
+      break;
+    }
+    case 5: {
+      const int board = enum_value(in, 0, 0);
+      checked("grSstSelect", [&] { grSstSelect(board); });
+      break;
+    }
+    case 6: {
+      const FxU32 code = small_or_any(in, GR_CONTROL_MOVE + 1);
+      checked("grSstControl", [&] { grSstControl(code); });
+      break;
+    }
+    case 7: {
+      const GrChipID_t chip = enum_value(in, GR_TMU0, GR_FBI);
+      const int reg = in.ConsumeIntegral<int>();
+      const FxU32 value = in.ConsumeIntegral<FxU32>();
+      checked("grSstConfigPipeline", [&] { grSstConfigPipeline(chip, reg, value); });
+      break;
+    }
+    case 8: {
+      GrSstPerfStats_t stats{};
+      const bool null = in.ConsumeIntegralInRange(0, 7) == 0;
+      checked("grSstPerfStats", [&] { grSstPerfStats(null ? nullptr : &stats); });
+      if (in.ConsumeBool()) checked("grSstResetPerfStats", [] { grSstResetPerfStats(); });
+      break;
+    }
+    case 9: {
+      FxU32 processed = 0, drawn = 0;
+      checked("grTriStats", [&] { grTriStats(&processed, &drawn); });
+      if (drawn > processed) violated("grTriStats", "more triangles drawn than processed");
+      if (in.ConsumeBool()) checked("grResetTriStats", [] { grResetTriStats(); });
+      break;
+    }
+    case 10:
+      checked("grDisableAllEffects", [] { grDisableAllEffects(); });
+      break;
+    case 11: {
+      char version[80];
+      checked("grGlideGetVersion", [&] { grGlideGetVersion(in.ConsumeIntegralInRange(0, 15) == 0 ? nullptr : version); });
+      const float x = coordinate(in, span), y = coordinate(in, span);
+      checked("grSplash", [&] { grSplash(x, y, span, span, in.ConsumeIntegral<FxU32>()); });
+      checked("grGlideShamelessPlug", [&] { grGlideShamelessPlug(boolean(in)); });
+      checked("grCheckForRoom", [&] { grCheckForRoom(in.ConsumeIntegral<FxI32>()); });
+      break;
+    }
+    case 12: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const FxBool enable = boolean(in);
+      checked("grTexMultibase", [&] { grTexMultibase(tmu, enable); });
+      break;
+    }
+    case 13: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const int range = enum_value(in, GR_TEXBASE_256, GR_TEXBASE_32_TO_1);
+      const FxU32 address = small_or_any(in, glide_shim::kTmuMemoryBytes + 8) & ~7u;
+      const FxU32 even_odd = small_or_any(in, 4);
+      GrTexInfo info = texture_info(in);
+      const bool null_info = in.ConsumeIntegralInRange(0, 15) == 0;
+      checked("grTexMultibaseAddress",
+              [&] { grTexMultibaseAddress(tmu, range, address, even_odd, null_info ? nullptr : &info); });
+      break;
+    }
+    case 14: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const FxU32 address = small_or_any(in, glide_shim::kTmuMemoryBytes + 8);
+      const GrLOD_t this_lod = enum_value(in, GR_LOD_256, GR_LOD_1);
+      const GrLOD_t large_lod = enum_value(in, GR_LOD_256, GR_LOD_1);
+      const GrAspectRatio_t aspect = enum_value(in, GR_ASPECT_8x1, GR_ASPECT_1x8);
+      const GrTextureFormat_t format = enum_value(in, GR_TEXFMT_8BIT, GR_TEXFMT_RSVD2);
+      const FxU32 even_odd = small_or_any(in, 4);
+      const int start = in.ConsumeIntegralInRange(-1, 257), end = in.ConsumeIntegralInRange(-1, 257);
+      // The whole level: rows start..end of it are read from the pointer's first row.
+      std::vector<std::uint8_t> data = texel_data(in, host_chain_bytes(this_lod, this_lod, aspect, format));
+      checked("grTexDownloadMipMapLevelPartial", kMemory, [&] {
+        grTexDownloadMipMapLevelPartial(tmu, address, this_lod, large_lod, aspect, format,
+                                        even_odd, data.data(), start, end);
+      });
+      break;
+    }
+    case 15: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const GrTexTable_t type = enum_value(in, GR_TEXTABLE_NCC0, GR_TEXTABLE_PALETTE);
+      GuTexTable table{};
+      const std::vector<std::uint8_t> bytes = in.ConsumeBytes<std::uint8_t>(sizeof table);
+      if (!bytes.empty()) std::memcpy(&table, bytes.data(), bytes.size());
+      const int start = in.ConsumeIntegralInRange(-1, 257), end = in.ConsumeIntegralInRange(-1, 257);
+      checked("grTexDownloadTablePartial", [&] { grTexDownloadTablePartial(tmu, type, &table, start, end); });
+      break;
+    }
+    case 16: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const FxU32 address = small_or_any(in, glide_shim::kTmuMemoryBytes + 8) & ~7u;
+      const GrLOD_t this_lod = enum_value(in, GR_LOD_256, GR_LOD_1);
+      const GrLOD_t large_lod = enum_value(in, GR_LOD_256, GR_LOD_1);
+      const GrAspectRatio_t aspect = enum_value(in, GR_ASPECT_8x1, GR_ASPECT_1x8);
+      const GrTextureFormat_t format = enum_value(in, GR_TEXFMT_8BIT, GR_TEXFMT_RSVD2);
+      const FxU32 even_odd = small_or_any(in, 4);
+      const long rows = in.ConsumeIntegralInRange<long>(0, 8);
+      std::vector<FxU8> bitmap = rle_bitmap(in, rows);
+      const long bm_h = in.ConsumeIntegralInRange(0, 15) == 0 ? in.ConsumeIntegralInRange<long>(-2, 300) : rows;
+      const FxU32 u0 = small_or_any(in, 16), v0 = small_or_any(in, 8);
+      const FxU32 width = small_or_any(in, 32), height = small_or_any(in, 8);
+      const FxU32 dest_width = small_or_any(in, 257), dest_height = small_or_any(in, 9);
+      std::vector<FxU16> tlut(256);
+      for (std::size_t i = 0; i < tlut.size(); ++i) tlut[i] = static_cast<FxU16>(i * 0x0821u);
+      // A bitmap height beyond its rows would make the shim read rows that do not exist (the
+      // C API cannot tell), so only fewer rows than written are claimed.
+      const long claimed = std::min(bm_h, rows);
+      checked("ConvertAndDownloadRle", kMemory, [&] {
+        ConvertAndDownloadRle(tmu, address, this_lod, large_lod, aspect, format, even_odd,
+                              bitmap.data(), claimed, u0, v0, width, height, dest_width,
+                              dest_height, tlut.data());
+      });
+      break;
+    }
+    case 17:
+    case 18:
+      gu_allocate(in);
+      break;
+    case 19:
+      gu_change(in);
+      break;
+    case 20:
+    case 21:
+      gu_download(in);
+      break;
+    case 22: {
+      const GrMipMapId_t id = mip_map_id(in);
+      checked("guTexSource", kGuRecords, [&] { guTexSource(id); });
+      break;
+    }
+    case 23: {
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      const GrMipMapId_t id = mip_map_id(in);
+      GrMipMapId_t current = 0;
+      GrMipMapInfo *info = nullptr;
+      FxU32 avail = 0;
+      checked("guTexGetCurrentMipMap", [&] { current = guTexGetCurrentMipMap(tmu); });
+      checked("guTexGetMipMapInfo", [&] { info = guTexGetMipMapInfo(id); });
+      checked("guTexMemQueryAvail", [&] { avail = guTexMemQueryAvail(tmu); });
+      if (ctx.display.open && !ctx.plain_gl && tmu == GR_TMU0) {
+        if (avail + ctx.gu_textures.free_base != glide_shim::kTmuMemoryBytes)
+          violated("guTexMemQueryAvail", "free memory and the free pointer do not add up");
+        if (current != ctx.gu_textures.current) violated("guTexGetCurrentMipMap", "not the current id");
+      }
+      // An id of the table not allocated yet gives its empty record, as the driver's does.
+      if (info != nullptr && id >= ctx.gu_textures.next_id && info->valid != FXFALSE)
+        violated("guTexGetMipMapInfo", "a valid record for an id never allocated");
+      break;
+    }
+    case 24:
+      checked("guTexMemReset", kGuRecords, [] { guTexMemReset(); });
+      break;
+    case 25:
+      lfb_layout(in);
+      break;
+    case 26: {
+      // RLE16 of a small image: first the size (dst NULL), then into a buffer of that size.
+      const FxU32 width = in.ConsumeIntegralInRange<FxU32>(0, 24);
+      const FxU32 height = in.ConsumeIntegralInRange<FxU32>(0, 24);
+      std::vector<FxU16> image(static_cast<std::size_t>(width) * height + 1);
+      const FxU16 a = in.ConsumeIntegral<FxU16>(), b = in.ConsumeIntegral<FxU16>();
+      for (std::size_t i = 0; i < image.size(); ++i) image[i] = in.ConsumeBool() ? a : b;
+      int bytes = -1;
+      checked("guEncodeRLE16", [&] { bytes = guEncodeRLE16(nullptr, image.data(), width, height); });
+      if (bytes < 0 || static_cast<std::size_t>(bytes) > 4 * (image.size() - 1))
+        violated("guEncodeRLE16", "more bytes than one run per pixel");
+      std::vector<std::uint8_t> out(static_cast<std::size_t>(bytes) + 1);
+      int again = -1;
+      checked("guEncodeRLE16", [&] { again = guEncodeRLE16(out.data(), image.data(), width, height); });
+      if (again != bytes) violated("guEncodeRLE16", "counting and encoding disagree");
+      checked("guEncodeRLE16", [&] { guEncodeRLE16(nullptr, nullptr, width, height); });
+      break;
+    }
+    case 27: {
+      FxU16 *mipmap = nullptr;
+      checked("guTexCreateColorMipMap", [&] { mipmap = guTexCreateColorMipMap(); });
+      if (mipmap == nullptr) violated("guTexCreateColorMipMap", "no mip map");
+      GrTexInfo info{GR_LOD_1, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565, mipmap};
+      if (in.ConsumeBool())
+        checked("grTexDownloadMipMap", kMemory,
+                [&] { grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info); });
+      std::free(mipmap);
+      break;
+    }
+    case 28: {
+      GrFog_t table[GR_FOG_TABLE_SIZE];
+      float w = 0.0f;
+      checked("guFogTableIndexToW", [&] { w = guFogTableIndexToW(in.ConsumeIntegralInRange(-2, 66)); });
+      (void)w;
+      const float density = coordinate(in, 1.0f);
+      switch (in.ConsumeIntegralInRange(0, 2)) {
+        case 0: checked("guFogGenerateExp", [&] { guFogGenerateExp(table, density); }); break;
+        case 1: checked("guFogGenerateExp2", [&] { guFogGenerateExp2(table, density); }); break;
+        default: {
+          const float near_z = coordinate(in, 1000.0f), far_z = coordinate(in, 1000.0f);
+          checked("guFogGenerateLinear", [&] { guFogGenerateLinear(table, near_z, far_z); });
+          break;
+        }
+      }
+      if (glideShimGetLastError() == GLIDESHIM_OK) checked("grFogTable", [&] { grFogTable(table); });
+      break;
+    }
+    case 29: {
+      const FxU32 word = in.ConsumeIntegral<FxU32>();
+      const FxU16 half = in.ConsumeIntegral<FxU16>();
+      FxU32 swapped = 0;
+      FxU16 swapped_half = 0;
+      checked("guEndianSwapWords", [&] { swapped = guEndianSwapWords(word); });
+      checked("guEndianSwapBytes", [&] { swapped_half = guEndianSwapBytes(half); });
+      if (guEndianSwapWords(swapped) != word || guEndianSwapBytes(swapped_half) != half)
+        violated("guEndianSwap*", "swapping twice is not the identity");
+      break;
+    }
+    case 30:
+    case 31:
+      multipass(in, span);
+      break;
+    case 32: {
+      std::vector<FxU16> pixels(16 * 16);
+      const int x = in.ConsumeIntegral<int>(), y = in.ConsumeIntegral<int>();
+      checked("guFbReadRegion", [&] { guFbReadRegion(x, y, 16, 16, pixels.data(), 32); });
+      checked("guFbWriteRegion", [&] { guFbWriteRegion(x, y, 16, 16, pixels.data(), 32); });
+      checked("guMovieSetName", [&] { guMovieSetName(in.ConsumeBool() ? nullptr : "movie"); });
+      checked("guMovieStart", [] { guMovieStart(); });
+      checked("guMovieStop", [] { guMovieStop(); });
+      break;
+    }
+    case 33:
+      three_df(in);
+      break;
+    case 34: {
+      int key = -1;
+      FxBool closed = FXTRUE;
+      checked("glideShimPollKey", [&] { key = glideShimPollKey(); });
+      checked("glideShimWindowClosed", [&] { closed = glideShimWindowClosed(); });
+      if (key != 0 || closed != FXFALSE) violated("glideShimPollKey", "keys or a close request headless");
+      const char *backend = nullptr;
+      checked("glideShimBackendName", [&] { backend = glideShimBackendName(); });
+      if (backend == nullptr) violated("glideShimBackendName", "NULL");
+      static const char *const kNames[] = {"glClear", "glDrawArrays", "glNoSuchFunction", "", nullptr};
+      const char *name = kNames[in.ConsumeIntegralInRange(0, 4)];
+      checked("glideShimGetProcAddress", [&] { glideShimGetProcAddress(name); });
+      // Values past the last kind give "unknown"; only 0..15 fit the C++ enum's range (a C
+      // caller's -1 would be undefined on the C++ side, before any code of the shim runs).
+      const char *error_name = glideShimErrorName(static_cast<GlideShimError>(in.ConsumeIntegralInRange(0, 15)));
+      if (error_name == nullptr || *error_name == '\0') violated("glideShimErrorName", "no name");
+      break;
+    }
+    case 35: {
+      // A PNG of a colour buffer (rare: it loads OpenImageIO), to a file, a directory or NULL.
+      if (in.ConsumeIntegralInRange(0, 7) != 0) break;
+      const GrBuffer_t buffer = enum_value(in, GR_BUFFER_FRONTBUFFER, GR_BUFFER_AUXBUFFER);
+      const int where = in.ConsumeIntegralInRange(0, 3);
+      const std::string path = where == 0 ? g_scratch : g_scratch + "/frame.png";
+      checked("glideShimWritePng", [&] { glideShimWritePng(buffer, where == 1 ? nullptr : path.c_str()); });
+      break;
+    }
+    case 36: {
+      FxU32 pixels = 0;
+      checked("glideShimPixelsWritten", [&] { pixels = glideShimPixelsWritten(); });
+      (void)pixels;
+      // Counting makes every later flush of the renderer wait for an occlusion query, and no
+      // call stops it: rare, and the next input gets a new GL context.
+      if (in.ConsumeIntegralInRange(0, 15) == 0) {
+        checked("glideShimResetPixelsWritten", [] { glideShimResetPixelsWritten(); });
+        g_renderer_counts = true;
+      }
+      break;
+    }
+    case 37:
+      // Save now, restore later in the same input (after other changes): the restored groups
+      // must be the saved ones, which saving again shows byte for byte.
+      if (!g_have_saved_state || in.ConsumeBool()) {
+        checked("grGlideGetState", [&] { grGlideGetState(&g_saved_state); });
+        g_have_saved_state = glideShimGetLastError() == GLIDESHIM_OK;
+      } else {
+        checked("grGlideSetState", [&] { grGlideSetState(&g_saved_state); });
+        if (glideShimGetLastError() == GLIDESHIM_OK) {
+          GrState again{};
+          checked("grGlideGetState", [&] { grGlideGetState(&again); });
+          if (glideShimGetLastError() == GLIDESHIM_OK &&
+              std::memcmp(&again, &g_saved_state, sizeof again) != 0)
+            violated("grGlideSetState", "the state saved after a restore differs from the one restored");
+        }
+      }
+      break;
+    case 38:
+      close_and_reopen(in);
+      break;
+    case 39: {
+      GrTexInfo info = texture_info(in);
+      const FxU32 even_odd = small_or_any(in, 4);
+      checked("grTexTextureMemRequired", [&] { grTexTextureMemRequired(even_odd, in.ConsumeIntegralInRange(0, 15) == 0 ? nullptr : &info); });
+      const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
+      checked("grTexMinAddress", [&] { grTexMinAddress(tmu); });
+      checked("grTexMaxAddress", [&] { grTexMaxAddress(tmu); });
+      break;
+    }
+    case 40:
+    case 41:
+      textured_draw(in, span);
+      break;
+    default: {
+      const int width = in.ConsumeIntegralInRange(-2, glide_shim::kMaxScreenSide + 2);
+      const int height = in.ConsumeIntegralInRange(-2, glide_shim::kMaxScreenSide + 2);
+      checked("glideShimSetWindowSize", [&] { glideShimSetWindowSize(width, height); });
+      break;
+    }
+  }
+}
+
 void one_call(FuzzedDataProvider &in, float span) {
-  switch (in.ConsumeIntegralInRange(0, 59)) {
+  switch (in.ConsumeIntegralInRange(0, 99)) {
     case 0: {
       const int f = enum_value(in, 0, 0x10), k = enum_value(in, 0, 0xd);
       const int l = enum_value(in, 0, 2), o = enum_value(in, 0, 2);
@@ -592,7 +1380,7 @@ void one_call(FuzzedDataProvider &in, float span) {
       std::vector<std::uint8_t> data =
           texel_data(in, host_chain_bytes(info.smallLod, info.largeLod, info.aspectRatio, info.format));
       info.data = in.ConsumeIntegralInRange(0, 15) == 0 ? nullptr : data.data();
-      checked("grTexDownloadMipMap", [&] { grTexDownloadMipMap(tmu, address, even_odd, &info); });
+      checked("grTexDownloadMipMap", kMemory, [&] { grTexDownloadMipMap(tmu, address, even_odd, &info); });
       break;
     }
     case 28: {
@@ -605,7 +1393,7 @@ void one_call(FuzzedDataProvider &in, float span) {
       const FxU32 even_odd = small_or_any(in, 4);
       std::vector<std::uint8_t> data =
           texel_data(in, host_chain_bytes(this_lod, this_lod, aspect, format));
-      checked("grTexDownloadMipMapLevel", [&] {
+      checked("grTexDownloadMipMapLevel", kMemory, [&] {
         grTexDownloadMipMapLevel(tmu, address, this_lod, large_lod, aspect, format, even_odd,
                                  data.data());
       });
@@ -648,9 +1436,18 @@ void one_call(FuzzedDataProvider &in, float span) {
       const GrLock_t type = enum_value(in, GR_LFB_READ_ONLY, GR_LFB_WRITE_ONLY) |
                             (in.ConsumeBool() ? GR_LFB_NOIDLE : 0);
       const GrBuffer_t buffer = enum_value(in, GR_BUFFER_FRONTBUFFER, GR_BUFFER_AUXBUFFER);
-      const GrLfbWriteMode_t mode = in.ConsumeBool() ? GR_LFBWRITEMODE_565 : enum_value(in, 0, 0xff);
+      // Every write mode (reserved ones and junk now and then), through the pixel pipeline
+      // or not.
+      static constexpr GrLfbWriteMode_t kModes[] = {
+          GR_LFBWRITEMODE_565,       GR_LFBWRITEMODE_555,       GR_LFBWRITEMODE_1555,
+          GR_LFBWRITEMODE_888,       GR_LFBWRITEMODE_8888,      GR_LFBWRITEMODE_565_DEPTH,
+          GR_LFBWRITEMODE_555_DEPTH, GR_LFBWRITEMODE_1555_DEPTH, GR_LFBWRITEMODE_ZA16,
+          GR_LFBWRITEMODE_ANY};
+      const GrLfbWriteMode_t mode = in.ConsumeIntegralInRange(0, 7) == 0
+                                        ? enum_value(in, 0, 0xff)
+                                        : kModes[in.ConsumeIntegralInRange<std::size_t>(0, 9)];
       const GrOriginLocation_t origin = enum_value(in, GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT);
-      const FxBool pipeline = in.ConsumeIntegralInRange(0, 3) == 0;
+      const FxBool pipeline = in.ConsumeBool() ? FXTRUE : (in.ConsumeIntegralInRange(0, 7) == 0 ? 2 : FXFALSE);
       GrLfbInfo_t info{};
       info.size = in.ConsumeIntegralInRange(0, 15) == 0 ? 0 : static_cast<int>(sizeof info);
       FxBool locked = FXFALSE;
@@ -718,11 +1515,11 @@ void one_call(FuzzedDataProvider &in, float span) {
       const GrChipID_t tmu = enum_value(in, GR_TMU0, GR_TMU0);
       const FxU32 address = small_or_any(in, glide_shim::kTmuMemoryBytes + 8);
       const GrLOD_t lod = enum_value(in, GR_LOD_256, GR_LOD_1);
-      checked("glideShimRenderToTexture", [&] { glideShimRenderToTexture(tmu, address, lod); });
+      checked("glideShimRenderToTexture", kMemory, [&] { glideShimRenderToTexture(tmu, address, lod); });
       break;
     }
     case 43:
-      checked("glideShimRenderToFrameBuffer", [] { glideShimRenderToFrameBuffer(); });
+      checked("glideShimRenderToFrameBuffer", kMemory, [] { glideShimRenderToFrameBuffer(); });
       break;
     case 44:
       checked("glideShimBeginGL", [] { glideShimBeginGL(); });
@@ -762,7 +1559,7 @@ void one_call(FuzzedDataProvider &in, float span) {
       const GrTexTable_t type = enum_value(in, GR_TEXTABLE_NCC0, GR_TEXTABLE_PALETTE);
       GuTexTable table{};  // the larger of a palette and an NCC table
       const std::vector<std::uint8_t> bytes = in.ConsumeBytes<std::uint8_t>(sizeof table);
-      std::memcpy(&table, bytes.data(), bytes.size());
+      if (!bytes.empty()) std::memcpy(&table, bytes.data(), bytes.size());
       checked("grTexDownloadTable", [&] { grTexDownloadTable(tmu, type, &table); });
       const GrNCCTable_t ncc = enum_value(in, GR_NCCTABLE_NCC0, GR_NCCTABLE_NCC1);
       checked("grTexNCCTable", [&] { grTexNCCTable(tmu, ncc); });
@@ -804,36 +1601,38 @@ void one_call(FuzzedDataProvider &in, float span) {
       break;
     }
     default:
-      // Closing and reopening: every group goes back to grSstWinOpen's defaults.
-      checked("grSstWinClose", [] { grSstWinClose(); });
-      if (glide_shim::current().display.open) violated("grSstWinClose", "the window is still open");
-      if (in.ConsumeBool()) open_window(in);
+      more_calls(in, span);
       break;
   }
 }
 
-bool g_started = false;
-
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
-  if (!g_started) {
-    grErrorSetCallback(on_error);
-    g_started = true;
-  }
-  FuzzedDataProvider in(data, size);
+extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv) {
+  (void)argc, (void)argv;
+  grErrorSetCallback(on_error);
+  // Files the calls read and write (.3df inputs, PNGs) go beside the binary, in the build tree.
+  char exe[4096] = {};
+  const ssize_t length = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  std::string dir = length > 0 ? std::string(exe, static_cast<std::size_t>(length)) : std::string("./x");
+  dir = dir.substr(0, dir.rfind('/'));
+  g_scratch = dir + "/glide_api_fuzz.files";
+  mkdir(g_scratch.c_str(), 0755);
+  // The run's window, opened before the first input; the shim closes it at exit.
   grGlideInit();
-  glideShimClearError();
-  if (!open_window(in)) {
-    grGlideShutdown();
-    return 0;
-  }
+  WindowRequest usual{kUsualWidth, kUsualHeight, GR_COLORFORMAT_ARGB, GR_ORIGIN_UPPER_LEFT, 2, 1, true};
+  if (!open_window(usual)) violated("grSstWinOpen", "the run's window did not open");
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  g_thorough = in.ConsumeIntegralInRange(0, 7) == 0 ? kAll : kSmall;
+  g_have_saved_state = false;
+  if (!start_input(in)) return 0;
   // Sides of the drawable area, for arguments near the screen's edges.
   const float span = static_cast<float>(std::max(glide_shim::current().display.width,
                                                  glide_shim::current().display.height));
-  for (int calls = 0; calls < 32 && in.remaining_bytes() > 0; ++calls) one_call(in, span);
-  grGlideShutdown();
-  if (glide_shim::current().display.open || glide_shim::current().initialized)
-    violated("grGlideShutdown", "the library is still open");
+  for (int calls = 0; calls < 48 && in.remaining_bytes() > 0; ++calls) one_call(in, span);
   return 0;
 }

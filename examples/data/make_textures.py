@@ -14,9 +14,8 @@ import struct
 import sys
 from pathlib import Path
 
-
-def header(format_name, smallest, largest, aspect):
-    return f"3df v1.1\n{format_name}\nlod range: {smallest} {largest}\naspect ratio: {aspect}\n".encode()
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+from threedf import header, palette  # noqa: E402
 
 
 def box_filter(level, side, channels):
@@ -67,9 +66,9 @@ def floor_palette():
 
 
 def floor():
-    palette = floor_palette()
+    colours = floor_palette()
     out = header("p8", 1, 64, "1 1")
-    out += b"".join(struct.pack(">I", r << 16 | g << 8 | b) for r, g, b in palette)
+    out += palette(colours)
     side = 64
     while side >= 1:
         # Each level is made at its own size (a palette index does not average): 4x4 tiles

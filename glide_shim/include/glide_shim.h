@@ -17,8 +17,11 @@ extern "C" {
 #endif
 
 /* Every kind of error an entry point can report. A call that reports one has changed nothing,
- * with one exception: GLIDESHIM_ERR_BACKEND may come from work the call finished regardless
- * (writing a GLIDESHIM_DUMP_DIR frame after a swap, compiling a shader for queued triangles). */
+ * with these exceptions: GLIDESHIM_ERR_BACKEND may come from work the call finished regardless
+ * (writing a GLIDESHIM_DUMP_DIR frame after a swap, compiling a shader for queued triangles);
+ * GLIDESHIM_ERR_OUT_OF_MEMORY and GLIDESHIM_ERR_INTERNAL stop a call wherever the exception was
+ * thrown, so the call returned its failure value but may have done part of its work. No C++
+ * exception ever leaves a call into the shim. */
 typedef enum {
   GLIDESHIM_OK = 0,
   GLIDESHIM_ERR_NOT_INITIALIZED, /* a call before grGlideInit, or one needing a window with none open */
@@ -29,7 +32,9 @@ typedef enum {
   GLIDESHIM_ERR_INCONSISTENT,    /* arguments that contradict each other (LOD order, lock state) */
   GLIDESHIM_ERR_UNSUPPORTED,     /* valid Glide 2.x, but not implemented by this shim yet */
   GLIDESHIM_ERR_BACKEND,         /* the OpenGL backend failed (context, shader, file output) */
-  GLIDESHIM_ERR_FILE             /* a file to read is missing, truncated or not in its format (.3df) */
+  GLIDESHIM_ERR_FILE,            /* a file to read is missing, truncated or not in its format (.3df) */
+  GLIDESHIM_ERR_OUT_OF_MEMORY,   /* memory ran out inside the call (std::bad_alloc) */
+  GLIDESHIM_ERR_INTERNAL         /* any other C++ exception inside the call: a shim bug */
 } GlideShimError;
 
 /* The last error reported since the previous clear, and its message ("" when none). */

@@ -16,7 +16,7 @@ bool is_blend_factor(GrAlphaBlendFnc_t f) {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grAlphaBlendFunction(GrAlphaBlendFnc_t rgb_sf, GrAlphaBlendFnc_t rgb_df,
                           GrAlphaBlendFnc_t alpha_sf, GrAlphaBlendFnc_t alpha_df) {
@@ -99,4 +99,4 @@ void grGammaCorrectionValue(float value) {
   ctx.display.gamma = value;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -68,7 +68,7 @@ std::vector<ShimVertex> clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVer
 using glide_shim::current;
 using glide_shim::ShimVertex;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
   auto &ctx = current();
@@ -135,4 +135,4 @@ void guAADrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVert
   }
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

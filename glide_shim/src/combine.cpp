@@ -90,7 +90,7 @@ void texture_combine_preset(const char *name, GrChipID_t tmu, GrTextureCombineFn
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grColorCombine(GrCombineFunction_t function, GrCombineFactor_t factor,
                     GrCombineLocal_t local, GrCombineOther_t other, FxBool invert) {
@@ -241,4 +241,4 @@ void grTexCombineFunction(GrChipID_t tmu, GrTextureCombineFnc_t function) {
   texture_combine_preset("grTexCombineFunction", tmu, function);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <cstdlib>
+
 namespace glide_shim {
 
 GlideContext::GlideContext() = default;
@@ -81,6 +83,13 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
 
 void GlideContext::flush() {
   if (renderer) renderer->flush();
+}
+
+void close_window_at_exit() {
+  static const bool registered = std::atexit([] {
+    if (current().display.open) grSstWinClose();
+  }) == 0;
+  (void)registered;
 }
 
 bool is_compare(GrCmpFnc_t function) {

@@ -250,6 +250,12 @@ class GlideContext {
 
 GlideContext &current();
 
+// Registers, once, an exit handler that closes a window the program left open. grSstWinOpen
+// calls it once its GL context exists, so that the handler runs before Mesa's own (exit
+// handlers run last-registered first), which stops llvmpipe's threads: a GL context destroyed
+// after that (by the static context's destructor) waits for those threads forever.
+void close_window_at_exit();
+
 bool is_compare(GrCmpFnc_t function);  // a GR_CMP_* value
 
 // Decodes a GrColor_t in the window's format to 8-bit R, G, B, A.

@@ -140,7 +140,7 @@ int bias_compare_intervals(const DepthState &depth, DepthInterval intervals[2]) 
 using glide_shim::current;
 
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grDepthBufferMode(GrDepthBufferMode_t mode) {
   auto &ctx = current();
@@ -186,4 +186,4 @@ void grDepthBiasLevel(FxI16 level) {
   ctx.depth.bias_level = level;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

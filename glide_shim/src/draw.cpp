@@ -209,7 +209,7 @@ void draw_polygon(const char *function, int nverts, const int *ilist, bool index
 
 using glide_shim::current;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grCullMode(GrCullMode_t mode) {
   auto &ctx = current();
@@ -340,7 +340,7 @@ void grAADrawPoint(const GrVertex *pt) {
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grAADrawPoint: pt is NULL");
     return;
   }
-  grDrawPoint(pt);  // drawn without a fringe: one pixel, like grDrawPoint
+  glide_shim_api::grDrawPoint(pt);  // drawn without a fringe: one pixel, like grDrawPoint
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

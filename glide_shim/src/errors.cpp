@@ -2,7 +2,7 @@
 // keeps it as the last error, and hands it once to the program's grErrorSetCallback callback.
 #include "context.h"
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grErrorSetCallback(GrErrorCallbackFnc_t function) {
   glide_shim::current().errors.callback = function;
@@ -32,11 +32,13 @@ const char *glideShimErrorName(GlideShimError error) {
     case GLIDESHIM_ERR_UNSUPPORTED: return "GLIDESHIM_ERR_UNSUPPORTED";
     case GLIDESHIM_ERR_BACKEND: return "GLIDESHIM_ERR_BACKEND";
     case GLIDESHIM_ERR_FILE: return "GLIDESHIM_ERR_FILE";
+    case GLIDESHIM_ERR_OUT_OF_MEMORY: return "GLIDESHIM_ERR_OUT_OF_MEMORY";
+    case GLIDESHIM_ERR_INTERNAL: return "GLIDESHIM_ERR_INTERNAL";
   }
   return "unknown";
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api
 
 namespace glide_shim {
 

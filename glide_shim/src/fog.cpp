@@ -49,9 +49,19 @@ bool check_generator(const char *function, const GrFog_t *table, float density) 
   return true;
 }
 
+// A density so small that the farthest entry's fog rounds to 0 in float gives no table (the
+// normalisation would divide by zero and every entry be NaN): refused like a zero density.
+bool check_scale(const char *function, float density, float scale) {
+  if (std::isfinite(scale)) return true;
+  current().report(GLIDESHIM_ERR_OUT_OF_RANGE, std::string(function) + ": density " +
+                                                   std::to_string(density) +
+                                                   " is too small to give a fog table");
+  return false;
+}
+
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grFogMode(GrFogMode_t mode) {
   auto &ctx = current();
@@ -98,6 +108,7 @@ void guFogGenerateExp(GrFog_t fogtable[], float density) {
   // Normalised so the last entry is fully fogged: f = (1 - e^-dw) / (1 - e^-d*w63).
   const float far_dp = density * index_to_w(kFogEntries - 1);
   const float scale = 1.0f / (1.0f - static_cast<float>(std::exp(-far_dp)));
+  if (!check_scale("guFogGenerateExp", density, scale)) return;
   for (int i = 0; i < kFogEntries; ++i) {
     const float dp = density * index_to_w(i);
     fogtable[i] = to_fog_byte((1.0f - static_cast<float>(std::exp(-dp))) * scale);
@@ -108,6 +119,7 @@ void guFogGenerateExp2(GrFog_t fogtable[], float density) {
   if (!check_generator("guFogGenerateExp2", fogtable, density)) return;
   const float far_dp = density * index_to_w(kFogEntries - 1);
   const float scale = 1.0f / (1.0f - static_cast<float>(std::exp(-(far_dp * far_dp))));
+  if (!check_scale("guFogGenerateExp2", density, scale)) return;
   for (int i = 0; i < kFogEntries; ++i) {
     const float dp = density * index_to_w(i);
     fogtable[i] = to_fog_byte((1.0f - static_cast<float>(std::exp(-(dp * dp)))) * scale);
@@ -133,4 +145,4 @@ void guFogGenerateLinear(GrFog_t fogtable[], float nearZ, float farZ) {
   }
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -176,7 +176,7 @@ void report_file(const char *function, const char *filename, const std::string &
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 FxBool gu3dfGetInfo(const char *filename, Gu3dfInfo *info) {
   if (filename == nullptr || info == nullptr) {
@@ -268,4 +268,4 @@ FxBool gu3dfLoad(const char *filename, Gu3dfInfo *info) {
   return FXTRUE;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -166,7 +166,7 @@ void draw_multiplied_passes(glide_shim::GlideContext &ctx, const SavedState &sav
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void guMPInit(void) {
   GrMPState &state = current().multipass;
@@ -243,4 +243,4 @@ void guMPDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
   saved.restore();
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

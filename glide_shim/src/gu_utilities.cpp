@@ -73,7 +73,7 @@ bool decode_rle_row(const FxU8 *bitmap, long rows, long row, const FxU16 *tlut,
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 FxU32 guEndianSwapWords(FxU32 value) { return (value >> 16) | (value << 16); }
 
@@ -229,4 +229,4 @@ void ConvertAndDownloadRle(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
                                   evenOdd, rows.data(), 0, static_cast<int>(rows_written) - 1);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -48,10 +48,12 @@ void read_words(GrBuffer_t buffer, int x, int y, int w, int h, std::uint16_t *ds
   const bool w_buffer = glide_shim::is_w_buffer(ctx.depth.mode);
   auto *out = reinterpret_cast<std::uint8_t *>(dst);
   for (int row = 0; row < h; ++row) {
-    auto *line = reinterpret_cast<std::uint16_t *>(out + static_cast<std::size_t>(row) * stride);
+    std::uint8_t *line = out + static_cast<std::size_t>(row) * stride;
     for (int col = 0; col < w; ++col) {
-      line[col] = glide_shim::code_from_gl_depth(depth[static_cast<std::size_t>(row * w + col)],
-                                                 w_buffer);
+      const std::uint16_t code = glide_shim::code_from_gl_depth(
+          depth[static_cast<std::size_t>(row * w + col)], w_buffer);
+      // memcpy: an odd dst_stride leaves the words of odd rows unaligned.
+      std::memcpy(line + static_cast<std::size_t>(col) * 2, &code, sizeof code);
     }
   }
 }
@@ -245,7 +247,7 @@ void write_direct(GrBuffer_t buffer, bool color, bool depth, int x, int y, int w
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
                  GrOriginLocation_t origin, FxBool pixelPipeline, GrLfbInfo_t *info) {
@@ -559,4 +561,4 @@ void grLfbConstantDepth(FxU16 depth) {
   ctx.lfb.constant_depth = depth;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -9,7 +9,7 @@
 
 using glide_shim::current;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 // The driver's bodies are empty: nothing is read or written, and nothing is reported.
 void guFbReadRegion(const int, const int, const int, const int, const void *, const int) {}
@@ -41,4 +41,4 @@ void grSstConfigPipeline(GrChipID_t chip, GrSstRegister reg, FxU32 value) {
                  std::to_string(reg) + ", value " + std::to_string(value) + ")");
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -6,7 +6,7 @@
 
 using glide_shim::current;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grSstResetPerfStats(void) {
   auto &ctx = current();
@@ -44,4 +44,4 @@ void grTriStats(FxU32 *trisProcessed, FxU32 *trisDrawn) {
   *trisDrawn = ctx.perf.triangles_drawn;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

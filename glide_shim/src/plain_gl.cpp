@@ -5,7 +5,7 @@
 
 using glide_shim::current;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 FxBool glideShimBeginGL(void) {
   auto &ctx = current();
@@ -47,4 +47,4 @@ void *glideShimGetProcAddress(const char *name) {
   return ctx.renderer->proc_address(name);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

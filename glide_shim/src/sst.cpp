@@ -42,7 +42,7 @@ bool is_origin(GrOriginLocation_t origin) {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grGlideInit(void) {
   auto &ctx = current();
@@ -154,6 +154,7 @@ FxBool grSstWinOpen(FxU32 hWnd, GrScreenResolution_t screen_resolution,
   }
   ctx.load_window_defaults(size.width, size.height, color_format, origin_location);
   ctx.renderer = std::move(renderer);
+  glide_shim::close_window_at_exit();
   return FXTRUE;
 }
 
@@ -163,6 +164,7 @@ void grSstWinClose(void) {
   ctx.flush();
   glide_shim::hold_last_frame(ctx);
   ctx.renderer.reset();
+  ctx.plain_gl = false;  // a GL context lent by glideShimBeginGL is gone with the window
   ctx.display.open = false;
   ctx.tmu.memory.clear();
   ctx.tmu.memory.shrink_to_fit();
@@ -292,4 +294,4 @@ FxBool glideShimSetWindowSize(int width, int height) {
   return FXTRUE;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

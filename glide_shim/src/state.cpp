@@ -195,7 +195,7 @@ void restore(glide_shim::GlideContext &ctx, const PackedState &s) {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grGlideGetState(GrState *state) {
   auto &ctx = current();
@@ -239,4 +239,4 @@ void grDisableAllEffects(void) {
   grFogMode(GR_FOG_DISABLE);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

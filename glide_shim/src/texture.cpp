@@ -50,7 +50,7 @@ bool check_tmu(const char *function, GrChipID_t tmu) {
 using glide_shim::check_texture_info;
 using glide_shim::check_tmu;
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 FxU32 grTexMinAddress(GrChipID_t tmu) {
   if (!check_tmu("grTexMinAddress", tmu)) return 0;
@@ -260,4 +260,4 @@ void grTexMultibaseAddress(GrChipID_t tmu, GrTexBaseRange_t range, FxU32 startAd
       glide_shim::chain_base(startAddress, top, info->aspectRatio, info->format, evenOdd);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -34,7 +34,7 @@ void write_memory(FxU32 address, const void *data, FxU32 bytes) {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTexInfo *info) {
   auto &ctx = current();
@@ -78,7 +78,7 @@ void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTe
   }
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api
 
 namespace {
 
@@ -164,7 +164,7 @@ void download_table(const char *name, GrChipID_t tmu, GrTexTable_t type, const v
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 void grTexDownloadMipMapLevelPartial(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
                                      GrLOD_t largeLod, GrAspectRatio_t aspectRatio,
@@ -190,4 +190,4 @@ void grTexDownloadTable(GrChipID_t tmu, GrTexTable_t type, void *data) {
   download_table("grTexDownloadTable", tmu, type, data, 0, true, 0);
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

@@ -65,7 +65,7 @@ glide_shim::Backend *window_backend() {
 
 }  // namespace
 
-extern "C" {
+namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
 
 int glideShimPollKey(void) {
   glide_shim::Backend *backend = window_backend();
@@ -77,4 +77,4 @@ FxBool glideShimWindowClosed(void) {
   return backend != nullptr && backend->close_requested() ? FXTRUE : FXFALSE;
 }
 
-}  // extern "C"
+}  // namespace glide_shim_api

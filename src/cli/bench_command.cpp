@@ -70,6 +70,11 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
   std::printf("%-16s %-16s %-38s %8s %6s %8s %8s %8s %6s %7s %6s\n", "frame", "technique",
               "settings", "ms", "x none", "wrong%", "band%", "inner%", "maxpx", "img err", "PSNR");
   for (const BenchRow &r : rows) {
+    if (r.failed) {
+      std::printf("%-16s %-16s %-38s %8.2f %6.2f FAILED: %s\n", r.frame.c_str(), r.technique.c_str(),
+                  r.settings.c_str(), r.frame_ms, r.ratio_to_none, r.failure.c_str());
+      continue;
+    }
     const double band = r.errors.false_shadow_band + r.errors.false_light_band;
     const double inner = r.errors.false_shadow_interior + r.errors.false_light_interior;
     std::printf("%-16s %-16s %-38s %8.2f %6.2f %8.3f %8.3f %8.3f %6.1f %7.2f %6.1f\n",
@@ -78,7 +83,8 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
                 r.errors.max_distance_px, 255 * r.image.mean, r.image.psnr);
   }
   std::printf("(wrong%%: receiver pixels misclassified; img err: mean absolute error of the whole "
-              "frame against the truth's exactly lit image, in 8-bit steps)\n\n");
+              "frame against the truth's exactly lit image, in 8-bit steps; FAILED: the technique "
+              "could not cast a shadow the frame has, so the row is not scored)\n\n");
   for (const std::string &line : article_step_comparison(rows)) std::printf("%s\n", line.c_str());
   if (!csv.empty()) {
     std::FILE *out = std::fopen(csv.c_str(), "w");
@@ -88,11 +94,17 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
     }
     std::fprintf(out, "frame,technique,settings,frame_ms,ratio_to_none,misclassified,false_shadow_band,"
                       "false_shadow_interior,false_light_band,false_light_interior,max_distance_px,"
-                      "self_shadow,image_mean_error,image_psnr,steps\n");
+                      "self_shadow,image_mean_error,image_psnr,steps,failed\n");
     for (const BenchRow &r : rows) {
       std::string steps;
       for (const auto &s : r.steps) steps += (steps.empty() ? "" : ";") + s.first + "=" + std::to_string(s.second);
-      std::fprintf(out, "%s,%s,%s,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.2f,%.6f,%.6f,%.2f,\"%s\"\n",
+      if (r.failed) {  // no measurement: the error columns are empty
+        std::fprintf(out, "%s,%s,%s,%.4f,%.4f,,,,,,,,,,\"%s\",\"%s\"\n", r.frame.c_str(),
+                     r.technique.c_str(), r.settings.c_str(), r.frame_ms, r.ratio_to_none,
+                     steps.c_str(), r.failure.c_str());
+        continue;
+      }
+      std::fprintf(out, "%s,%s,%s,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.2f,%.6f,%.6f,%.2f,\"%s\",\n",
                    r.frame.c_str(), r.technique.c_str(), r.settings.c_str(), r.frame_ms, r.ratio_to_none,
                    r.errors.misclassified, r.errors.false_shadow_band, r.errors.false_shadow_interior,
                    r.errors.false_light_band, r.errors.false_light_interior, r.errors.max_distance_px,
@@ -109,7 +121,7 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
       double time = 0, wrong = 0;
       std::size_t n = 0;
       for (const BenchRow &r : rows) {
-        if (r.configuration != c) continue;
+        if (r.configuration != c || r.failed) continue;  // a failed row is never scored
         time += r.frame_ms, wrong += r.errors.misclassified, ++n;
       }
       if (n == frames.size() && n > 0)
@@ -126,7 +138,9 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
     for (const BenchFrame &frame : frames) {
       const BenchRow *best = nullptr;
       for (const BenchRow &r : rows) {
-        if (r.frame != frame.name || r.technique == "none" || r.errors.misclassified > budget) continue;
+        if (r.failed || r.frame != frame.name || r.technique == "none" ||
+            r.errors.misclassified > budget)
+          continue;
         if (best == nullptr || r.frame_ms < best->frame_ms) best = &r;
       }
       if (best == nullptr) {
@@ -146,8 +160,7 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
 Command add_bench_command(CLI::App &app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App *bench = app.add_subcommand("bench", "speed against error of every technique and setting");
-  bench->add_option("scenes", o->scenes, "scene files (default: fight frames and scenes/*.json)")
-      ->check(CLI::ExistingFile);
+  bench->add_option("scenes", o->scenes, "scene files (default: fight frames and scenes/*.json)");
   bench->add_flag("--quick", o->quick, "a few configurations on one fight frame (under a minute)");
   bench->add_option("--repeats", o->repeats, "timed repeats per configuration (median)")
       ->check(CLI::Range(1, 100))->capture_default_str();

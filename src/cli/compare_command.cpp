@@ -44,8 +44,8 @@ int run_compare(const CompareOptions &o) {
 Command add_compare_command(CLI::App &app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App *compare = app.add_subcommand("compare", "compare two images (and, for masks, shadow errors)");
-  compare->add_option("a", o->a, "an image, or a technique's mask")->required()->check(CLI::ExistingFile);
-  compare->add_option("b", o->b, "the reference image, or the true mask")->required()->check(CLI::ExistingFile);
+  compare->add_option("a", o->a, "an image, or a technique's mask")->required();
+  compare->add_option("b", o->b, "the reference image, or the true mask")->required();
   compare->add_option("--diff", o->diff, "write a heat map of the difference (PNG)");
   return {compare, [o] { return run_compare(*o); }};
 }

@@ -1,3 +1,4 @@
+// The options and set-up the subcommands share (options.h).
 #include "cli/options.h"
 
 #include <glide.h>

@@ -15,7 +15,7 @@ struct TechniqueChoice {
   std::string name = "projected";
   bool direct_path = false, point = false, affine = false, auto_size = false;
   std::string alpha = "constant";
-  float bias_slope = 1.0f, bias_units = 4.0f;  // depth-map polygon offset
+  float bias_slope = 2.0f, bias_units = 4.0f;  // depth-map polygon offset (technique.h)
   bool nearest = false;                       // depth-map filtering
   std::string volume = "auto";                // stencil-volume mode
 };

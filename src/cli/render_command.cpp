@@ -7,6 +7,7 @@
 #include <glide.h>
 #include <glide_shim.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,6 +18,7 @@ namespace {
 struct RenderOptions {
   std::string scene_path, out = "render.png", mask;
   int shadow_size = 0;  // 0: each light's own shadow_size
+  bool allow_missing_shadows = false;
   TechniqueChoice choice;
 };
 
@@ -35,7 +37,17 @@ int run_render(const RenderOptions &o) {
   }
   if (!open_window(scene.width, scene.height)) return 1;
   const FrameReport frame = technique->render(scene, false);
-  for (const std::string &w : frame.warnings) std::fprintf(stderr, "glideshadows render: warning: %s\n", w.c_str());
+  // A shadow the frame should show and does not is an error (exit 1) unless the user allowed it.
+  const char *missing = o.allow_missing_shadows ? "warning" : "error";
+  for (const std::string &w : frame.warnings) {
+    const bool is_error =
+        std::find(frame.errors.begin(), frame.errors.end(), w) != frame.errors.end();
+    std::fprintf(stderr, "glideshadows render: %s: %s\n", is_error ? missing : "warning", w.c_str());
+  }
+  for (const std::string &e : frame.errors) {
+    if (std::find(frame.warnings.begin(), frame.warnings.end(), e) == frame.warnings.end())
+      std::fprintf(stderr, "glideshadows render: %s: %s\n", missing, e.c_str());
+  }
   bool ok = glideShimWritePng(GR_BUFFER_BACKBUFFER, o.out.c_str());
   if (ok) std::printf("image: %s\n", o.out.c_str());
   if (ok && !o.mask.empty()) {
@@ -47,6 +59,12 @@ int run_render(const RenderOptions &o) {
   }
   if (!ok) std::fprintf(stderr, "glideshadows render: %s\n", glideShimGetLastErrorMessage());
   grGlideShutdown();
+  if (ok && !frame.errors.empty() && !o.allow_missing_shadows) {
+    std::fprintf(stderr,
+                 "glideshadows render: the frame misses shadows (above); --allow-missing-shadows "
+                 "accepts it\n");
+    return 1;
+  }
   return ok ? 0 : 1;
 }
 
@@ -55,9 +73,11 @@ int run_render(const RenderOptions &o) {
 Command add_render_command(CLI::App &app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App *render = app.add_subcommand("render", "render a scene file (JSON, docs/scene_format.md)");
-  render->add_option("scene", o->scene_path, "scene file")->required()->check(CLI::ExistingFile);
+  render->add_option("scene", o->scene_path, "scene file")->required();
   render->add_option("--out", o->out, "output PNG")->capture_default_str();
   render->add_option("--mask", o->mask, "also write the shadow mask PNG (white: darkened by the technique)");
+  render->add_flag("--allow-missing-shadows", o->allow_missing_shadows,
+                   "exit 0 even when the technique cannot cast a shadow the scene has (it says which)");
   add_technique_options(*render, o->choice, o->shadow_size);
   render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
   render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256, 512}));

@@ -50,7 +50,7 @@ int run_truth(const TruthOptions &o) {
 Command add_truth_command(CLI::App &app) {
   auto o = std::make_shared<TruthOptions>();
   CLI::App *truth = app.add_subcommand("truth", "ray-cast the exact shadow mask (and image) of a scene file");
-  truth->add_option("scene", o->scene_path, "scene file")->required()->check(CLI::ExistingFile);
+  truth->add_option("scene", o->scene_path, "scene file")->required();
   truth->add_option("--mask", o->mask, "output: white where another object blocks a light")->required();
   truth->add_option("--image", o->image, "output: the scene lit with exact visibility");
   return {truth, [o] { return run_truth(*o); }};

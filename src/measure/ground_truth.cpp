@@ -1,7 +1,9 @@
 // Ground truth by ray casting with Embree 3: one BVH over every object's world-space triangles,
 // a camera ray per pixel centre that sees front faces only (the techniques cull back faces), hit
 // points refined in double on the hit triangle's plane, and shadow rays to every spotlight.
-// Every object occludes, whatever its casts_shadow flag says: this is the physical answer.
+// The scene's flags are honoured as every technique honours them: only objects with
+// casts_shadow block a shadow ray (themselves included), and a surface whose object has
+// receives_shadow false is never in shadow (every light that reaches it is Lit).
 #include "measure/ground_truth.h"
 
 #include "scene/lighting.h"
@@ -30,6 +32,8 @@ constexpr double kDegenerateScale = 1e-12;
 // One object as Embree sees it: its kept (non-degenerate) triangles in world space, double.
 struct Body {
   int object = -1;
+  bool casts = true;                 // the object's casts_shadow: it blocks shadow rays
+  bool receives = true;              // the object's receives_shadow
   std::vector<glm::dvec3> position;  // world, per vertex
   std::vector<glm::vec3> normal;     // world, unit, per vertex (shading)
   std::vector<glm::vec3> color;      // 0..1, per vertex
@@ -37,8 +41,9 @@ struct Body {
   std::vector<glm::dvec3> face;      // world, unit, CCW-from-outside side, by primID
 };
 
-// A context whose filter drops hits on one geometry: shadow rays that ignore the receiver's
-// own object. Embree hands the filter the context pointer, so the extra field rides along.
+// A shadow ray's context: its filter drops hits on objects that cast no shadow and, unless
+// `skip` is RTC_INVALID_GEOMETRY_ID, on that one geometry (the receiver's own object). Embree
+// hands the filter the context pointer, so the extra field rides along.
 struct SkipGeometryContext {
   RTCIntersectContext base;
   unsigned skip;
@@ -58,8 +63,10 @@ void front_faces_only(const RTCFilterFunctionNArguments *args) {
 
 void skip_geometry(const RTCFilterFunctionNArguments *args) {
   const unsigned skip = reinterpret_cast<const SkipGeometryContext *>(args->context)->skip;
+  const bool casts = static_cast<const Body *>(args->geometryUserPtr)->casts;
   for (unsigned i = 0; i < args->N; ++i) {
-    if (args->valid[i] == -1 && RTCHitN_geomID(args->hit, args->N, i) == skip) args->valid[i] = 0;
+    if (args->valid[i] != -1) continue;
+    if (!casts || RTCHitN_geomID(args->hit, args->N, i) == skip) args->valid[i] = 0;
   }
 }
 
@@ -88,6 +95,8 @@ std::vector<Body> make_bodies(const Scene &scene, double &radius) {
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(object.model_to_world)));
     Body body;
     body.object = static_cast<int>(o);
+    body.casts = object.casts_shadow;
+    body.receives = object.receives_shadow;
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
       const glm::dvec3 p(model * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
       body.position.push_back(p);
@@ -189,12 +198,14 @@ struct Caster {
 };
 
 // Whether `light` reaches the surface point, and if blocked, whether another object blocks it.
+// Only casters block; a surface that receives no shadow is lit wherever the light reaches it.
 LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3 &point,
-                       const glm::dvec3 &face, unsigned own, bool &by_other) {
+                       const glm::dvec3 &face, unsigned own, bool receives, bool &by_other) {
   by_other = false;
   const glm::dvec3 light_pos(light.position);
   if (spot_factor(light, glm::vec3(point)) <= 0.0f || glm::dot(face, light_pos - point) <= 0.0)
     return LightReach::Outside;
+  if (!receives) return LightReach::Lit;
   const glm::dvec3 origin = point + face * c.offset;
   const glm::dvec3 to_light = light_pos - origin;
   const double distance = glm::length(to_light);
@@ -211,10 +222,12 @@ LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3
     by_other = true;
     return LightReach::Blocked;
   }
-  RTCIntersectContext any;
-  rtcInitIntersectContext(&any);
+  SkipGeometryContext any;  // every caster, the receiver's own object included
+  rtcInitIntersectContext(&any.base);
+  any.base.filter = skip_geometry;
+  any.skip = RTC_INVALID_GEOMETRY_ID;
   ray = make_ray(origin, to_light / distance, tfar);
-  rtcOccluded1(c.rtc, &any, &ray);
+  rtcOccluded1(c.rtc, &any.base, &ray);
   return ray.tfar < 0.0f ? LightReach::Blocked : LightReach::Lit;
 }
 
@@ -282,7 +295,8 @@ void cast_pixel(const Caster &c, int i, int j, GroundTruth &truth) {
       continue;
     }
     bool by_other = false;
-    const LightReach reach = reach_light(c, light, point, face, hit.hit.geomID, by_other);
+    const LightReach reach =
+        reach_light(c, light, point, face, hit.hit.geomID, body.receives, by_other);
     truth.reach[pixel * lights + l] = reach;
     if (reach == LightReach::Blocked) {
       (by_other ? by_other_any : by_self_only_any) = true;

@@ -19,13 +19,8 @@ namespace {
 
 namespace IBA = OIIO::ImageBufAlgo;
 
-// Image layout, in pixels (origin top left). The right margin holds the legend.
-constexpr int kWidth = 900;
-constexpr int kHeight = 600;
-constexpr int kPlotLeft = 70;
-constexpr int kPlotRight = 700;
-constexpr int kPlotTop = 50;
-constexpr int kPlotBottom = 540;
+// Image layout, in pixels: plot.h; below, where the legend and marks go.
+using namespace plot_layout;
 constexpr int kLegendX = 715;
 constexpr int kTickLength = 5;
 constexpr int kPointHalf = 3;     // points are 7x7 squares

@@ -14,6 +14,18 @@ struct PlotPoint {
   std::string label;     // technique name; points sharing it share a colour
 };
 
+// The plot image's layout, in image pixels (origin top left): its size and the plot area the
+// axes frame; the right margin holds the legend. Public so that a test can find where a point
+// of known time and error must be drawn.
+namespace plot_layout {
+constexpr int kWidth = 900;
+constexpr int kHeight = 600;
+constexpr int kPlotLeft = 70;
+constexpr int kPlotRight = 700;
+constexpr int kPlotTop = 50;
+constexpr int kPlotBottom = 540;
+}  // namespace plot_layout
+
 // Indices of the points on the Pareto front, ordered by time.
 std::vector<std::size_t> pareto_front(const std::vector<PlotPoint> &points);
 

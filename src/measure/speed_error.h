@@ -38,6 +38,10 @@ struct BenchRow {
   MaskErrors errors;            // against the truth, self-shadowing excluded
   ImageErrors image;            // the whole frame against the truth's exactly lit image
   double self_shadow = 0.0;     // fraction of visible pixels only self-shadowed (not counted)
+  // The technique reported shadows it could not cast (FrameReport::errors, the first here): the
+  // row is a failure, its errors are not measured and it is never scored or plotted.
+  bool failed = false;
+  std::string failure;
 };
 
 std::vector<BenchConfiguration> bench_configurations(bool quick);

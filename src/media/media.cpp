@@ -1,3 +1,5 @@
+// The media writers of media.h: OpenImageIO does the encoding; this file decides the sizes, the
+// frame names and which files a run owns.
 #include "media/media.h"
 
 #include <OpenImageIO/imagebuf.h>

@@ -2,6 +2,7 @@
 // checked against its documented type and range; the first problem ends the load with a message
 // naming the file and the field's JSON path, and nothing reaches the caller's Scene.
 #include "scene/fighter.h"
+#include "scene/scene_json.h"
 #include "scene/input_file.h"
 #include "scene/ring.h"
 #include "scene/scene.h"
@@ -27,7 +28,7 @@
 namespace gs {
 namespace {
 
-using json = nlohmann::json;
+using namespace scene_json;
 
 // The scene's triangle budget, shadow meshes included: enough for a 1000 x 1000 plane, and far
 // below what would exhaust memory or stall a frame for minutes.
@@ -37,181 +38,7 @@ constexpr unsigned kMaxSlices = 1000;     // sphere, cylinder
 constexpr unsigned kMaxStacks = 1000;     // sphere: 2 * 1000 * 1000 triangles at most
 constexpr unsigned kMaxScreenSide = 2048;
 constexpr std::size_t kMaxLights = 16;  // each light is at least one more pass over the scene
-constexpr std::size_t kMaxSceneFileBytes = 16u << 20;  // far above any hand-written scene
 constexpr int kProjectedImageSide = 128;  // slides and beams from files: 128 x 128 texels
-
-// A problem in the file: the JSON path of the field ("objects[2].mesh.shape"; empty for the
-// file as a whole) and what is wrong with it. Thrown inside this file only; load_scene catches it.
-struct SceneError {
-  std::string where;
-  std::string problem;
-};
-
-// One value of the parsed document together with its JSON path, for messages.
-struct Field {
-  const json &value;
-  std::string path;
-
-  [[noreturn]] void fail(const std::string &problem) const { throw SceneError{path, problem}; }
-
-  std::string child_path(const std::string &key) const {
-    return path.empty() ? key : path + "." + key;
-  }
-
-  // Requires an object whose keys are all in `allowed`: a misspelt optional field must not be
-  // silently ignored.
-  void require_object_with_keys(std::initializer_list<const char *> allowed) const {
-    if (!value.is_object()) fail("must be an object");
-    for (const auto &item : value.items()) {
-      bool known = false;
-      for (const char *key : allowed) known = known || item.key() == key;
-      if (known) continue;
-      std::string expected;
-      std::size_t index = 0;
-      for (const char *key : allowed) {
-        if (index > 0) expected += index + 1 == allowed.size() ? " or " : ", ";
-        expected += key;
-        ++index;
-      }
-      throw SceneError{child_path(item.key()), "unknown field (expected " + expected + ")"};
-    }
-  }
-
-  bool has(const char *key) const { return value.contains(key); }
-
-  Field operator[](const char *key) const {
-    const auto found = value.find(key);
-    if (found == value.end()) throw SceneError{child_path(key), "required field is missing"};
-    return {*found, child_path(key)};
-  }
-
-  Field item(std::size_t index) const {
-    return {value[index], path + "[" + std::to_string(index) + "]"};
-  }
-};
-
-// ---- values ----------------------------------------------------------------------------------
-
-bool any_value(float) { return true; }
-bool positive(float v) { return v > 0.0f; }
-bool unit_interval(float v) { return v >= 0.0f && v <= 1.0f; }
-
-// A JSON number within float range (1e39 is a valid double but not a float) that passes
-// `accept`; `expected` completes "must be ...".
-float number(const Field &f, const char *expected, bool (*accept)(float)) {
-  if (f.value.is_number()) {
-    const double v = f.value.get<double>();
-    if (std::abs(v) <= std::numeric_limits<float>::max() && accept(static_cast<float>(v)))
-      return static_cast<float>(v);
-  }
-  f.fail(std::string("must be ") + expected);
-}
-
-// Every integer field is positive, so only non-negative JSON integers (nlohmann stores those as
-// unsigned) can be in range; 640.0 is a float in JSON and is refused like 640.5.
-int integer(const Field &f, unsigned lo, unsigned hi) {
-  if (f.value.is_number_unsigned()) {
-    const std::uint64_t v = f.value.get<std::uint64_t>();
-    if (v >= lo && v <= hi) return static_cast<int>(v);
-  }
-  f.fail("must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
-}
-
-bool boolean(const Field &f) {
-  if (!f.value.is_boolean()) f.fail("must be true or false");
-  return f.value.get<bool>();
-}
-
-std::string text(const Field &f) {
-  if (!f.value.is_string()) f.fail("must be a string");
-  return f.value.get<std::string>();
-}
-
-glm::vec3 vec3(const Field &f, const char *element, bool (*accept)(float)) {
-  if (!f.value.is_array() || f.value.size() != 3) f.fail("must be an array of 3 numbers");
-  glm::vec3 v;
-  for (int i = 0; i < 3; ++i) v[i] = number(f.item(static_cast<std::size_t>(i)), element, accept);
-  return v;
-}
-
-glm::vec3 position(const Field &f) { return vec3(f, "a finite number", any_value); }
-glm::vec3 color(const Field &f) { return vec3(f, "a number in [0, 1]", unit_interval); }
-
-// ---- parsing ---------------------------------------------------------------------------------
-
-// nlohmann keeps the last of two equal keys; a field given twice is a mistake like a misspelt
-// one, so the parse callback follows the JSON path and remembers the first repeated key.
-class DuplicateKeyFinder {
- public:
-  std::string first_duplicate;  // its JSON path; empty if every object's keys are distinct
-
-  bool operator()(int, json::parse_event_t event, const json &parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-        frames_.push_back({false, 0, {}, {}});
-        break;
-      case json::parse_event_t::array_start:
-        frames_.push_back({true, 0, {}, {}});
-        break;
-      case json::parse_event_t::key:
-        frames_.back().key = parsed.get<std::string>();
-        if (!frames_.back().keys.insert(frames_.back().key).second && first_duplicate.empty())
-          first_duplicate = path();
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        frames_.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::value:
-        element_done();
-        break;
-    }
-    return true;  // keep every value
-  }
-
- private:
-  struct Frame {
-    bool array;
-    std::size_t index;  // array: the element being read
-    std::string key;    // object: the member being read
-    std::set<std::string> keys;
-  };
-  std::vector<Frame> frames_;
-
-  void element_done() {
-    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
-  }
-  std::string path() const {
-    std::string result;
-    for (const Frame &frame : frames_) {
-      if (frame.array)
-        result += "[" + std::to_string(frame.index) + "]";
-      else
-        result += (result.empty() ? "" : ".") + frame.key;
-    }
-    return result;
-  }
-};
-
-json parse_file(const std::string &path) {
-  std::string contents, error;
-  if (!read_input_file(path, kMaxSceneFileBytes, contents, error)) throw SceneError{{}, error};
-  DuplicateKeyFinder duplicates;
-  json document;
-  try {
-    document = json::parse(contents, std::ref(duplicates));
-  } catch (const json::exception &e) {
-    // what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
-    const std::string what = e.what();
-    const std::size_t tag_end = what.find("] ");
-    throw SceneError{
-        {}, "malformed JSON: " + (tag_end == std::string::npos ? what : what.substr(tag_end + 2))};
-  }
-  if (!duplicates.first_duplicate.empty())
-    throw SceneError{duplicates.first_duplicate, "field given twice"};
-  return document;
-}
 
 // ---- scene parts -----------------------------------------------------------------------------
 

@@ -1,10 +1,13 @@
-// Depth-map shadows in fixed-function GL. Spaces: world (every vertex array holds world
-// positions, so all camera passes send identical vertices and meet the ambient pass's depth
-// exactly); light view (the light at the origin looking down -z) and light clip (GL convention);
-// light texture (s, t, r in 0..1 after the divide by q = light-view depth); camera eye and clip.
+// Depth-map shadows, steps 2 and 3 and the mask: the camera's passes over the maps that
+// depth_map_from_light.cpp made, and the technique itself. Spaces: world (every vertex array holds
+// world positions, so all camera passes send identical vertices and meet the ambient pass's depth
+// exactly); light clip (GL convention) and light texture (s, t, r in 0..1 after the divide by
+// q = light-view depth) in the texgen planes; camera eye and clip.
 #include "techniques/depth_map_shadow.h"
 
+#include "techniques/depth_map_passes.h"
 #include "techniques/gl_api.h"
+#include "techniques/gl_beam_mask.h"
 #include "techniques/gl_light_units.h"
 #include "scene/lighting.h"
 #include "techniques/projection.h"
@@ -15,32 +18,19 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace gs {
+namespace depth_map {
 namespace {
 
-constexpr float kWidestCone = 179.0f;  // degrees; wider, the square frustum degenerates
 // The q gate: unit 1 looks up s = kGateSlope * q in a two-texel step texture (0 then 1), so a
 // fragment gets the light only where q > 0.5 / kGateSlope (50 um in front of the light's
 // plane). Behind the light s/q, t/q and r/q would land back in the map (back projection).
 constexpr float kGateSlope = 1e4f;  // per metre of light-view depth
-
-using Clock = std::chrono::steady_clock;
-double elapsed_ms(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// An object's vertices in world space: the arrays every pass draws.
-struct WorldMesh {
-  const SceneObject *object = nullptr;
-  std::vector<glm::vec3> position;  // world
-  std::vector<glm::vec3> normal;    // world, unit
-};
 
 std::vector<WorldMesh> world_meshes(const Scene &scene) {
   std::vector<WorldMesh> meshes;
@@ -59,94 +49,13 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
   return meshes;
 }
 
-// A light's frustum: square, its full angle the cone's (the beam's circle is inscribed), near
-// and far fitted to the scene: far beyond every vertex, near before every caster's vertex in
-// front of the light. A receiver nearer than that has r < 0, which compares as lit.
-struct LightFrustum {
-  glm::mat4 view{1.0f};        // world to light view
-  glm::mat4 projection{1.0f};  // light view to light clip
-  std::string problem;         // why the light has none, for the user; empty when it has one
-};
-
-LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotLight &light,
-                               std::size_t index) {
-  LightFrustum frustum;
-  const std::string name = "light " + std::to_string(index);
-  if (!(light.cone_degrees > 0.0f && light.cone_degrees < kWidestCone)) {
-    frustum.problem = name + ": a cone of " + std::to_string(light.cone_degrees) +
-                      " degrees has no depth-map frustum (it must be under " +
-                      std::to_string(kWidestCone) + "), so the light casts no shadow";
-    return frustum;
-  }
-  const glm::vec3 axis = light.target - light.position;
-  if (!(glm::length(axis) > 1e-6f)) {
-    frustum.problem = name +
-                      " has its target at its position: no depth-map frustum, so the "
-                      "light casts no shadow";
-    return frustum;
-  }
-  const glm::vec3 up =
-      std::abs(glm::normalize(axis).y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  frustum.view = glm::lookAt(light.position, light.target, up);
-  float farthest = 0.0f, nearest_caster = INFINITY;  // light-view depth, metres
-  for (const WorldMesh &mesh : meshes) {
-    for (const glm::vec3 &p : mesh.position) {
-      const float depth = -(frustum.view * glm::vec4(p, 1.0f)).z;
-      farthest = std::max(farthest, depth);
-      if (mesh.object->casts_shadow) nearest_caster = std::min(nearest_caster, depth);
-    }
-  }
-  // A 1000:1 range at the most: 24 bits then still resolve about a millimetre at 10 m. (With
-  // no caster the map stays empty and any near plane will do.)
-  const float far_plane = std::max(farthest, 1e-3f) * 1.01f;
-  const float near_plane = std::clamp(nearest_caster * 0.99f, far_plane * 1e-3f, far_plane * 0.5f);
-  frustum.projection =
-      glm::perspective(glm::radians(light.cone_degrees), 1.0f, near_plane, far_plane);
-  return frustum;
+// Whether a vertex's surface faces `light`: where the mask may say the depth map took it away
+// (whether the point is in the light's beam is decided per pixel, by GlBeamMask).
+bool faces(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
+  return glm::dot(normal, light.position - world) > 0.0f;
 }
 
-// Whether `light` reaches a vertex at all (inside its cone, the surface facing it): where the
-// mask may say the depth map took it away.
-bool reaches(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
-  return spot_factor(light, world) > 0.0f && glm::dot(normal, light.position - world) > 0.0f;
-}
-
-// The GL objects and passes of one frame. Textures and framebuffer are made and deleted with
-// it, inside one glideShimBeginGL .. glideShimEndGL, so none outlives the window it was made in.
-class Passes {
- public:
-  Passes(const GlApi &gl, const Scene &scene, const TechniqueOptions &options);
-  ~Passes();
-  Passes(const Passes &) = delete;
-  Passes &operator=(const Passes &) = delete;
-
-  void depth_from_lights(std::vector<std::string> &warnings);  // step 1
-  void ambient_pass();                                         // step 2
-  void lit_passes();                                           // step 3
-  // The mask over the frame's depth buffer (after steps 1-3 of the same scene).
-  void mask_passes();
-
- private:
-  void use_camera();
-  // Unit 0: light `light`'s map compared with `compare` (LEQUAL: 1 where lit); unit 1: the q
-  // gate. Texgen planes are given while the modelview is the camera's view, so they act on
-  // world coordinates (Everitt et al., Appendix A).
-  void bind_shadow_units(std::size_t light, GLenum compare);
-  void release_shadow_units();
-  void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
-  float farthest_from(const SpotLight &light) const;  // largest light-space depth, metres
-
-  const GlApi &gl_;
-  const Scene &scene_;
-  const TechniqueOptions &options_;
-  std::vector<WorldMesh> meshes_;
-  std::vector<LightFrustum> frustums_;  // per light
-  std::vector<GLuint> maps_;            // per light; 0: the light casts no shadow
-  GLuint framebuffer_ = 0;              // step 1's, depth only
-  GLuint gate_ = 0;                     // the q gate's step texture
-  GLint target_framebuffer_ = 0;        // the shim's, holding Glide's back buffer
-  GLint window_[4] = {};                // the shim's viewport: the whole window
-};
+}  // namespace
 
 Passes::Passes(const GlApi &gl, const Scene &scene, const TechniqueOptions &options)
     : gl_(gl), scene_(scene), options_(options), meshes_(world_meshes(scene)) {
@@ -171,83 +80,6 @@ Passes::~Passes() {
   }
   gl_.glDeleteTextures(1, &gate_);
   if (framebuffer_ != 0) gl_.glDeleteFramebuffers(1, &framebuffer_);
-}
-
-void Passes::depth_from_lights(std::vector<std::string> &warnings) {
-  gl_.glGenFramebuffers(1, &framebuffer_);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  gl_.glDrawBuffer(GL_NONE);
-  gl_.glReadBuffer(GL_NONE);
-  gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthFunc(GL_LESS);
-  gl_.glDepthMask(GL_TRUE);
-  gl_.glDisable(GL_CULL_FACE);  // a caster shadows from whichever side the light sees it
-  // Pushed away from the light by the slope (light-view depth per texel) and a few depth units,
-  // so a lit surface compares nearer than its own sample (Everitt et al., "Why is polygon
-  // offset needed?").
-  gl_.glEnable(GL_POLYGON_OFFSET_FILL);
-  gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);
-  const GLint filter = options_.depth_map_linear ? GL_LINEAR : GL_NEAREST;
-  const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
-  if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
-    warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
-                       "-bit depth maps do not exist (16 or 24); using 24");
-  }
-  for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
-    maps_.push_back(0);
-    if (scene_.lights[light].is_projector()) {  // slides cast no shadows: no map, gate open
-      frustums_.emplace_back();
-      continue;
-    }
-    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light));
-    const LightFrustum &frustum = frustums_.back();
-    if (!frustum.problem.empty()) {
-      warnings.push_back(frustum.problem);
-      continue;
-    }
-    const GLsizei side =
-        options_.projected.size > 0 ? options_.projected.size : scene_.lights[light].shadow_size;
-    GLuint map = 0;
-    gl_.glGenTextures(1, &map);
-    gl_.glBindTexture(GL_TEXTURE_2D, map);
-    const GLint format =
-        options_.depth_map_bits == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
-    gl_.glTexImage2D(GL_TEXTURE_2D, 0, format, side, side, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
-                     nullptr);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    gl_.glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, lit_border);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-    gl_.glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_ALPHA);  // (0, 0, 0, result)
-    gl_.glBindTexture(GL_TEXTURE_2D, 0);
-    gl_.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
-    if (gl_.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      const std::string size = std::to_string(side);
-      warnings.push_back("light " + std::to_string(light) + ": a " + size + "x" + size +
-                         " depth texture cannot be rendered to, so the light casts no shadow");
-      gl_.glDeleteTextures(1, &map);
-      continue;
-    }
-    maps_.back() = map;
-    gl_.glViewport(0, 0, side, side);
-    gl_.glClearDepth(1.0);  // the light's far plane (Glide's own clears leave other values)
-    gl_.glClear(GL_DEPTH_BUFFER_BIT);
-    gl_.glMatrixMode(GL_PROJECTION);
-    gl_.glLoadMatrixf(&frustum.projection[0][0]);
-    gl_.glMatrixMode(GL_MODELVIEW);
-    gl_.glLoadMatrixf(&frustum.view[0][0]);
-    // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
-    for (const WorldMesh &mesh : meshes_) {
-      if (!mesh.object->casts_shadow) continue;
-      gl_.glVertexPointer(3, GL_FLOAT, 0, mesh.position.data());
-      gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
-                         GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
-    }
-  }
-  gl_.glDisable(GL_POLYGON_OFFSET_FILL);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_framebuffer_));
 }
 
 void Passes::use_camera() {
@@ -343,16 +175,19 @@ void Passes::mask_passes() {
   gl_.glClear(GL_COLOR_BUFFER_BIT);  // colour only: the depth buffer keeps the frame's surfaces
   gl_.glDepthFunc(GL_EQUAL);
   gl_.glDepthMask(GL_FALSE);
-  // White where alpha = (light reaches the vertices) x (shadowed fraction) x (q gate) is over
-  // 2/255, half of 565's finest step: llvmpipe's percentage-closer lookup now and then reads an
-  // unshadowed point as a few thousandths shadowed (measured: under 1/256), which darkens nothing.
+  // White where alpha = (the surface faces the light, per vertex) x (the shadowed fraction of the
+  // percentage-closer lookup) x (q gate) x (the beam's footprint, per pixel) is at least 1/2:
+  // the one definition of shadow (technique.h), at least half of the light's view blocked where
+  // the light shines.
   gl_.glEnable(GL_ALPHA_TEST);
-  gl_.glAlphaFunc(GL_GREATER, 2.0f / 255.0f);
+  gl_.glAlphaFunc(GL_GEQUAL, 0.5f);
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     if (scene_.lights[light].is_projector()) continue;
     if (maps_[light] == 0) continue;
     const SpotLight &spot = scene_.lights[light];
+    GlBeamMask footprint(gl_, spot, 2);
     bind_shadow_units(light, GL_GREATER);  // the comparison inverted: 1 where in shadow
+    footprint.bind();
     gl_.glActiveTexture(GL_TEXTURE0);
     gl_.glEnable(GL_TEXTURE_2D);
     for (const WorldMesh &mesh : meshes_) {
@@ -360,10 +195,11 @@ void Passes::mask_passes() {
       std::vector<glm::vec4> colors;
       for (std::size_t i = 0; i < mesh.position.size(); ++i) {
         colors.emplace_back(1.0f, 1.0f, 1.0f,
-                            reaches(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
+                            faces(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
       }
       draw(mesh, colors);
     }
+    footprint.release();
   }
   release_shadow_units();
   gl_.glDisable(GL_ALPHA_TEST);
@@ -374,6 +210,7 @@ void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
   // unit 0 is left disabled, so it lights without shadows.
   const LightFrustum &frustum = frustums_[light];
   const glm::mat4 light_clip = frustum.projection * frustum.view;  // world to light clip
+  // (q, its w, is the light-view depth along the light's own axis, as the gate needs.)
   // S: light clip to texture coordinates, s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.
   const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
                          glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
@@ -426,6 +263,15 @@ void Passes::draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors) {
                      GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
 }
 
+}  // namespace depth_map
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double elapsed_ms(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
 // GL errors the passes raised, as one warning each (they mean a bug here, not a user error).
 void report_gl_errors(const GlApi &gl, std::vector<std::string> &warnings) {
   for (GLenum error = gl.glGetError(); error != GL_NO_ERROR; error = gl.glGetError()) {
@@ -443,16 +289,20 @@ class DepthMapShadow final : public ShadowTechnique {
     FrameReport report;
     const auto frame_start = Clock::now();
     GlApi gl;
-    if (!begin(gl, report.warnings)) return report;
+    if (!begin(gl, report.warnings)) {
+      report.errors = report.warnings;  // no shadow at all
+      return report;
+    }
     {
-      Passes passes(gl, scene, options_);
+      depth_map::Passes passes(gl, scene, options_);
       auto step = [&](const char *name, auto &&pass) {
         const auto start = Clock::now();
         pass();
         if (synchronous) gl.glFinish();
         report.steps.emplace_back(name, elapsed_ms(start));
       };
-      step("1 depth from the light", [&] { passes.depth_from_lights(report.warnings); });
+      step("1 depth from the light",
+           [&] { passes.depth_from_lights(report.warnings, report.errors); });
       step("2 ambient pass", [&] { passes.ambient_pass(); });
       step("3 lit pass with the depth test", [&] { passes.lit_passes(); });
     }
@@ -468,8 +318,8 @@ class DepthMapShadow final : public ShadowTechnique {
     if (!begin(gl, ignored)) return;
     {
       // The maps are made again rather than kept from render: no GL object outlives a call.
-      Passes passes(gl, scene, options_);
-      passes.depth_from_lights(ignored);
+      depth_map::Passes passes(gl, scene, options_);
+      passes.depth_from_lights(ignored, ignored);
       passes.mask_passes();
     }
     glideShimEndGL();

@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <glm/glm.hpp>
 
 #include <string>
 
@@ -34,5 +35,13 @@ struct GlApi {
 
 // Fills `api` from the shim's current context; false with `error` naming the first missing one.
 bool load_gl_api(GlApi &api, std::string &error);
+
+// Two projected textures on texture units `first_unit` and `first_unit + 1`, each modulating the
+// fragment and addressed by EYE_LINEAR texgen whose s, t, r, q are the rows of its matrix: planes
+// in the vertex arrays' space, given while the modelview matrix is the camera's view of them.
+// Leaves unit 0 active. release_projected_pair unbinds both and turns their texgen off.
+void bind_projected_pair(const GlApi &gl, int first_unit, const GLuint textures[2],
+                         const glm::mat4 *const to_texture[2]);
+void release_projected_pair(const GlApi &gl, int first_unit);
 
 }  // namespace gs

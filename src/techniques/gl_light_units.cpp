@@ -33,20 +33,6 @@ GLuint make_texture(const GlApi &gl, int width, int height, int channels, const 
   return texture;
 }
 
-// Texgen for the active unit: s, t, r, q are the rows of `world_to_texture` (world planes).
-void set_texgen(const GlApi &gl, const glm::mat4 &world_to_texture) {
-  const GLenum coords[4] = {GL_S, GL_T, GL_R, GL_Q};
-  const GLenum enables[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
-                             GL_TEXTURE_GEN_Q};
-  for (int row = 0; row < 4; ++row) {
-    const glm::mat4 &m = world_to_texture;
-    const GLfloat plane[4] = {m[0][row], m[1][row], m[2][row], m[3][row]};
-    gl.glTexGeni(coords[row], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-    gl.glTexGenfv(coords[row], GL_EYE_PLANE, plane);
-    gl.glEnable(enables[row]);
-  }
-}
-
 }  // namespace
 
 GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthest,
@@ -107,26 +93,12 @@ void GlLightUnits::bind() {
   to_attenuation[3][3] = 1.0f;
 
   const GLuint textures[2] = {beam_, attenuation_};
-  const glm::mat4 *planes[2] = {&to_beam, &to_attenuation};
-  for (int i = 0; i < 2; ++i) {
-    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
-    gl_.glBindTexture(GL_TEXTURE_2D, textures[i]);
-    gl_.glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    set_texgen(gl_, *planes[i]);
-    gl_.glEnable(GL_TEXTURE_2D);
-  }
-  gl_.glActiveTexture(GL_TEXTURE0);
+  const glm::mat4 *const planes[2] = {&to_beam, &to_attenuation};
+  bind_projected_pair(gl_, 2, textures, planes);
 }
 
 void GlLightUnits::release() {
-  for (int i = 1; i >= 0; --i) {
-    gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
-    gl_.glBindTexture(GL_TEXTURE_2D, 0);
-    gl_.glDisable(GL_TEXTURE_2D);
-    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
-      gl_.glDisable(gen);
-  }
-  gl_.glActiveTexture(GL_TEXTURE0);
+  release_projected_pair(gl_, 2);
 }
 
 }  // namespace gs

@@ -1,9 +1,12 @@
-// The planar shadow technique, step by step. Spaces: world (all geometry, and the shadow polygons
-// step 1 makes); light directions (light view x/-z, y/-z: where the light sees a point, used only
-// to reject pairs early); Glide screen through the camera (pixels, y down, oow = 1/w) in step 3.
+// The planar shadow technique's drawing: the scene pass, then step 1's shadow polygons
+// (planar_casting.cpp) drawn over their receivers with depth levels that darken each pixel once.
+// Spaces: world (the shadow polygons); Glide screen through the camera (pixels, y down,
+// oow = 1/w) in step 3.
 #include "techniques/planar_shadow.h"
 
 #include "scene/lighting.h"
+#include "techniques/light_beam.h"
+#include "techniques/stencil_volume_shadow.h"
 #include "techniques/projection.h"
 #include "techniques/scene_pass.h"
 
@@ -15,255 +18,9 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 namespace gs {
-namespace {
-
-// A caster point this close to the light's height above a receiver plane (as a fraction of that
-// height) would project over a thousand times farther than it is from the light: such parts are
-// cut off, since no receiver triangle reaches that far and float precision would not either.
-constexpr float kNearLightHeight = 0.999f;
-
-// Light directions of a triangle: the rectangle around its corners' (x/-z, y/-z) in light view.
-// A triangle reaching behind the light's view plane has no such rectangle and gets all of
-// direction space.
-struct DirectionBox {
-  glm::vec2 low{-INFINITY}, high{INFINITY};
-  bool overlaps(const DirectionBox &other) const {
-    return low.x <= other.high.x && other.low.x <= high.x && low.y <= other.high.y &&
-           other.low.y <= high.y;
-  }
-  void include(const DirectionBox &other) {
-    low = glm::min(low, other.low);
-    high = glm::max(high, other.high);
-  }
-};
-
-constexpr DirectionBox kEmptyBox{glm::vec2(INFINITY), glm::vec2(-INFINITY)};
-
-// An object's vertices in world space and as seen from one light.
-struct LitVertices {
-  std::vector<glm::vec3> world;
-  std::vector<glm::vec2> direction;  // light view x/-z, y/-z
-  std::vector<bool> in_front;        // in front of the light's view plane (direction valid)
-};
-
-LitVertices light_vertices(const Mesh &mesh, const glm::mat4 &model_to_world,
-                           const glm::mat4 &light_view) {
-  LitVertices lit;
-  const std::size_t n = mesh.positions.size();
-  lit.world.resize(n);
-  lit.direction.resize(n);
-  lit.in_front.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    lit.world[i] = glm::vec3(model_to_world * glm::vec4(mesh.positions[i], 1.0f));
-    const glm::vec3 view = glm::vec3(light_view * glm::vec4(lit.world[i], 1.0f));
-    lit.in_front[i] = view.z < -1e-4f;
-    if (lit.in_front[i]) lit.direction[i] = glm::vec2(view.x, view.y) / -view.z;
-  }
-  return lit;
-}
-
-DirectionBox triangle_box(const LitVertices &lit, const glm::uvec3 &t) {
-  if (!lit.in_front[t.x] || !lit.in_front[t.y] || !lit.in_front[t.z]) return {};
-  return {glm::min(lit.direction[t.x], glm::min(lit.direction[t.y], lit.direction[t.z])),
-          glm::max(lit.direction[t.x], glm::max(lit.direction[t.y], lit.direction[t.z]))};
-}
-
-bool faces(const glm::vec3 &light, const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
-  return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;
-}
-
-struct CasterTriangle {
-  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
-  DirectionBox box;
-};
-
-struct Caster {
-  std::size_t object = 0;  // index into scene.objects
-  std::vector<CasterTriangle> triangles;
-  DirectionBox box = kEmptyBox;
-};
-
-// A receiver triangle facing the light, with its plane and edges ready for clipping.
-struct ReceiverTriangle {
-  std::uint32_t index = 0;          // into the object's mesh.triangles
-  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
-  glm::vec3 normal{0.0f};           // world, unit, on the light's side
-  float offset = 0.0f;              // dot(normal, p) of the plane's points
-  float light_height = 0.0f;        // the light's distance above the plane, metres (> 0)
-  std::array<glm::vec3, 3> inward;  // world, in the plane: into the triangle from edge i, i+1
-  std::array<float, 3> inward_offset{};
-  DirectionBox box;
-};
-
-struct Receiver {
-  std::size_t object = 0;
-  std::vector<ReceiverTriangle> triangles;
-  DirectionBox box = kEmptyBox;
-};
-
-Caster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &light,
-                      const glm::mat4 &light_view) {
-  const SceneObject &object = scene.objects[index];
-  const Mesh &mesh = object.shadow_mesh.triangles.empty() ? object.mesh : object.shadow_mesh;
-  const LitVertices lit = light_vertices(mesh, object.model_to_world, light_view);
-  Caster caster;
-  caster.object = index;
-  for (const glm::uvec3 &t : mesh.triangles) {
-    const glm::vec3 &a = lit.world[t.x], &b = lit.world[t.y], &c = lit.world[t.z];
-    if (!faces(light.position, a, b, c)) continue;  // the article's "lightface-culled"
-    // Wholly behind the light's view plane: its shadow goes away from every receiver in the cone.
-    if (!lit.in_front[t.x] && !lit.in_front[t.y] && !lit.in_front[t.z]) continue;
-    caster.triangles.push_back({{a, b, c}, triangle_box(lit, t)});
-    caster.box.include(caster.triangles.back().box);
-  }
-  return caster;
-}
-
-Receiver prepare_receiver(const Scene &scene, std::size_t index, const SpotLight &light,
-                          const glm::mat4 &light_view) {
-  const SceneObject &object = scene.objects[index];
-  const LitVertices lit = light_vertices(object.mesh, object.model_to_world, light_view);
-  std::vector<bool> in_cone(lit.world.size());
-  for (std::size_t i = 0; i < lit.world.size(); ++i) {
-    in_cone[i] = spot_factor(light, lit.world[i]) > 0.0f;
-  }
-  Receiver receiver;
-  receiver.object = index;
-  for (std::size_t k = 0; k < object.mesh.triangles.size(); ++k) {
-    const glm::uvec3 &t = object.mesh.triangles[k];
-    // Lighting is per vertex (Gouraud): with the light's factor zero at all three corners it
-    // adds nothing anywhere on the triangle, so there is nothing for a shadow to take away.
-    if (!in_cone[t.x] && !in_cone[t.y] && !in_cone[t.z]) continue;
-    ReceiverTriangle r;
-    r.index = static_cast<std::uint32_t>(k);
-    r.corner = {lit.world[t.x], lit.world[t.y], lit.world[t.z]};
-    const glm::vec3 cross = glm::cross(r.corner[1] - r.corner[0], r.corner[2] - r.corner[0]);
-    const float length = glm::length(cross);
-    if (!(length > 1e-12f)) continue;  // degenerate
-    r.normal = cross / length;
-    r.offset = glm::dot(r.normal, r.corner[0]);
-    r.light_height = glm::dot(r.normal, light.position) - r.offset;
-    if (r.light_height <= 0.0f) continue;  // facing away from the light
-    for (int e = 0; e < 3; ++e) {
-      const glm::vec3 &from = r.corner[static_cast<std::size_t>(e)];
-      const glm::vec3 &to = r.corner[static_cast<std::size_t>((e + 1) % 3)];
-      r.inward[static_cast<std::size_t>(e)] = glm::cross(r.normal, to - from);
-      r.inward_offset[static_cast<std::size_t>(e)] = glm::dot(r.inward[static_cast<std::size_t>(e)], from);
-    }
-    r.box = triangle_box(lit, t);
-    receiver.box.include(r.box);
-    receiver.triangles.push_back(r);
-  }
-  return receiver;
-}
-
-// A convex polygon during clipping: a triangle cut by five planes has at most eight corners.
-struct SmallPolygon {
-  std::array<glm::vec3, 12> v;
-  std::size_t n = 0;
-};
-
-// Sutherland-Hodgman against one plane: keeps the part where dot(normal, p) >= offset.
-void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, SmallPolygon &scratch) {
-  scratch.n = 0;
-  for (std::size_t i = 0; i < polygon.n; ++i) {
-    const glm::vec3 &a = polygon.v[i], &b = polygon.v[(i + 1) % polygon.n];
-    const float da = glm::dot(normal, a) - offset, db = glm::dot(normal, b) - offset;
-    if (da >= 0.0f) scratch.v[scratch.n++] = a;
-    if ((da >= 0.0f) != (db >= 0.0f)) scratch.v[scratch.n++] = a + (b - a) * (da / (da - db));
-  }
-  std::swap(polygon, scratch);
-}
-
-// Listing 1's lines 05-09 for one pair, in world space: the caster triangle clipped to the part
-// between the receiver's plane and the light's height above it, projected from the light onto
-// the plane, and clipped against the receiver's three edges within the plane.
-void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
-             const glm::vec3 &light, const std::array<float, 3> &height, SmallPolygon &polygon,
-             SmallPolygon &scratch) {
-  const float top = receiver.light_height * kNearLightHeight;
-  polygon.n = 3;
-  std::copy(caster.corner.begin(), caster.corner.end(), polygon.v.begin());
-  if (std::min({height[0], height[1], height[2]}) < 0.0f) {
-    clip_keep(polygon, receiver.normal, receiver.offset, scratch);  // beyond the plane
-  }
-  if (std::max({height[0], height[1], height[2]}) > top) {
-    clip_keep(polygon, -receiver.normal, -(receiver.offset + top), scratch);
-  }
-  for (std::size_t i = 0; i < polygon.n; ++i) {
-    // Along the ray from the light: the plane is reached at light_height / (light_height - d).
-    const float d = glm::dot(receiver.normal, polygon.v[i]) - receiver.offset;
-    polygon.v[i] = light + (polygon.v[i] - light) *
-                               (receiver.light_height / (receiver.light_height - d));
-  }
-  for (std::size_t e = 0; e < 3 && polygon.n >= 3; ++e) {
-    clip_keep(polygon, receiver.inward[e], receiver.inward_offset[e], scratch);
-  }
-}
-
-glm::mat4 light_view_matrix(const SpotLight &light) {
-  glm::vec3 axis = light.target - light.position;
-  axis = glm::length(axis) > 1e-6f ? glm::normalize(axis) : glm::vec3(0.0f, -1.0f, 0.0f);
-  const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  return glm::lookAt(light.position, light.position + axis, up);
-}
-
-}  // namespace
-
-PlanarShadows project_and_clip_casters(const Scene &scene) {
-  PlanarShadows result;
-  result.lights.resize(scene.lights.size());
-  SmallPolygon polygon, scratch;
-  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const SpotLight &light = scene.lights[l];
-    if (light.is_projector()) continue;  // slides cast no shadows
-    const glm::mat4 light_view = light_view_matrix(light);
-    std::vector<Caster> casters;
-    std::vector<Receiver> receivers;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      if (scene.objects[i].casts_shadow) casters.push_back(prepare_caster(scene, i, light, light_view));
-      if (scene.objects[i].receives_shadow) {
-        receivers.push_back(prepare_receiver(scene, i, light, light_view));
-      }
-    }
-    ShadowPolygons &out = result.lights[l];
-    for (const Receiver &receiver : receivers) {
-      for (const Caster &caster : casters) {
-        if (caster.object == receiver.object || !caster.box.overlaps(receiver.box)) continue;
-        for (const ReceiverTriangle &r : receiver.triangles) {
-          if (!r.box.overlaps(caster.box)) continue;
-          const float top = r.light_height * kNearLightHeight;
-          for (const CasterTriangle &c : caster.triangles) {
-            if (!c.box.overlaps(r.box)) continue;
-            // Heights above the receiver's plane: nothing wholly beyond the plane (the receiver
-            // is then between it and the light) or wholly level with the light casts on it.
-            const std::array<float, 3> height = {glm::dot(r.normal, c.corner[0]) - r.offset,
-                                                 glm::dot(r.normal, c.corner[1]) - r.offset,
-                                                 glm::dot(r.normal, c.corner[2]) - r.offset};
-            if (std::max({height[0], height[1], height[2]}) <= 0.0f) continue;
-            if (std::min({height[0], height[1], height[2]}) >= top) continue;
-            if (result.pairs_clipped == kMaxClippedPairs) {
-              ++result.pairs_skipped;
-              continue;
-            }
-            ++result.pairs_clipped;
-            cast_on(c, r, light.position, height, polygon, scratch);
-            if (polygon.n < 3) continue;
-            out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
-                                    static_cast<std::uint32_t>(polygon.n),
-                                    static_cast<std::uint32_t>(receiver.object), r.index});
-            out.vertices.insert(out.vertices.end(), polygon.v.begin(),
-                                polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
-          }
-        }
-      }
-    }
-  }
-  return result;
-}
-
 namespace {
 
 // Step 3's depth levels, in W-buffer codes (4096 per octave of w, so n codes nearer is 1/w times
@@ -411,12 +168,13 @@ class PlanarShadow final : public ShadowTechnique {
     finish_step("3 draw the shadow polygons");
     report.total_ms = elapsed_ms(frame_start);
     if (shadows_.pairs_skipped > 0) {
-      report.warnings.push_back(
+      report.errors.push_back(
           "planar: " + std::to_string(shadows_.pairs_skipped) +
           " caster/receiver triangle pairs beyond the limit of " +
           std::to_string(kMaxClippedPairs) +
           " per frame were not clipped, so part of the shadows is missing (fewer caster "
           "triangles, e.g. a simpler shadow_mesh, bring it under the limit)");
+      report.warnings.push_back(report.errors.back());
     }
     return report;
   }

@@ -1,10 +1,12 @@
 // Hubert Nguyen's projected shadow texture (Game Developer, 1999), written against Glide as the
 // article's five steps: render the caster flat from the light; make an ARGB_4444 texture of it;
 // compute (s, t) for the receivers; render the scene; render the flagged triangles again with
-// the texture. One texture per caster and light; the caster never receives its own shadow.
+// the texture. One texture per caster and light; the caster never receives its own shadow, and
+// no shadow falls outside the light's beam (step 3 clips receivers to it, light_beam.h).
 #pragma once
 
 #include "scene/scene.h"
+#include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
 
 #include <glide.h>
@@ -31,7 +33,10 @@ struct ProjectedShadowOptions {
   int border_texels = 2;       // clean border the light's view keeps around the caster
 };
 
-// The light's view of one caster (step 1's camera), fitted to the caster's bounding sphere.
+// The light's view of one caster (step 1's camera). Fitted to the caster's bounding sphere when
+// the whole caster lies in the light's beam and the sphere fits a view; otherwise to what the
+// beam holds of the caster (its triangles clipped to the beam's outer pyramid, light_beam.h),
+// which keeps the shadow of a caster wider than the beam, or one the light sits beside or behind.
 struct LightView {
   glm::mat4 view{1.0f};             // world to light view space (the light looks down -z)
   glm::mat4 projection{1.0f};       // light view to light clip space
@@ -42,9 +47,19 @@ struct LightView {
   bool clip_to_view = false;        // a tile of a larger map: receivers are clipped to its part
   bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
                                     // in the back buffer; a larger one goes direct)
-  bool usable = false;              // false: the light is too close for a clean border
-  std::string problem;              // why not, for the user
+  // False: no texture for this caster. Then either `outside_beam` (nothing of the caster is in
+  // the beam, so it has no shadow to cast: right, and silent) or `problem` says why a shadow the
+  // frame should have is missing (an error: the frame is wrong).
+  bool usable = false;
+  bool outside_beam = false;
+  std::string problem;
   std::string note;                 // a change the user asked for did not get (path fallback)
+  // Light view space planes step 1 clips the caster to (a plane just in front of the light and
+  // the view's square inside its clean border); empty when the whole caster is inside them.
+  std::vector<glm::vec4> caster_planes;
+  // The light's beam (light_beam.h): step 3 clips receivers to its lit regions, so step 5
+  // darkens nothing the light does not reach.
+  LightBeam beam;
   // Which 16x16 cells of the texture the caster's triangles touch (a bounding-box cover, so
   // conservative): step 3 skips receiver triangles that see only empty cells, where step 5
   // would blend alpha 0 and change nothing.
@@ -85,9 +100,10 @@ struct ShadowJob {
   ReceiverCoords receivers;
 };
 
-// Step 1, in three parts. The light's view fitted to the caster's bounding sphere, keeping a
-// clean border; a map larger than a Voodoo 1 texture split into 256x256 tiles; and the caster
-// drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled) in a
+// Step 1, in three parts. The light's view fitted to the caster (LightView), keeping a clean
+// border; a map larger than a Voodoo 1 texture split into 256x256 tiles; and the caster
+// drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled unless
+// the caster is an open mesh; only its part inside LightView::caster_planes) in a
 // size x size region: the back buffer's top-left corner, or texture memory at
 // `texture_address` on the direct path.
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
@@ -106,14 +122,19 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options);
 // Step 4 is render_scene (scene_pass.h).
-// Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, LEQUAL W-buffer,
-// alpha = texture alpha x iterated alpha, blended over the scene.
+// Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
+// codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended
+// over the scene; every pixel it darkens is marked in the depth buffer, so the next shadow of
+// the same light leaves it as it is (one darkening per light, however many shadows overlap).
+// render_projected_shadows restores step 4's depth between lights.
 void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options);
 
 struct ShadowFrame {
   StepTimes times;
+  FrameGeometry geometry;             // step 4's projection of the scene
   std::vector<ShadowJob> jobs;        // one per caster and light that got a shadow
-  std::vector<std::string> warnings;  // casters left without a shadow, and why
+  std::vector<std::string> warnings;  // what the user should know, `errors` included
+  std::vector<std::string> errors;    // casters left without a shadow they should cast, and why
 };
 
 // The whole frame in the article's order, into the back buffer. With `synchronous`, each step
@@ -121,8 +142,15 @@ struct ShadowFrame {
 ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOptions &options,
                                      bool synchronous);
 
-// The shadow mask of a frame just rendered: every pixel step 5 darkened, white on black, drawn
-// into the back buffer over the frame's depth buffer (call before the next clear).
+// The shadow mask of a frame just rendered: white where the pixel is in shadow (technique.h: the
+// filtered texture alpha at least half), black elsewhere, drawn into the back buffer over the
+// frame's depth buffer (call before the next clear). Step 5 leaves marks in the depth buffer
+// (one darkening per light), so this version draws the receivers a little nearer than step 4
+// did (kSealCodes and a margin: about 0.6% of the distance), enough to pass them.
 void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame);
+// The same for a frame of render_projected_shadows(scene, ...): step 4's depth is drawn again
+// first (its frame.geometry), so the receivers are drawn at step 5's own depths.
+void render_shadow_mask(const Scene &scene, const ProjectedShadowOptions &options,
+                        const ShadowFrame &frame);
 
 }  // namespace gs

@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstring>
+#include <tuple>
 
 namespace gs {
 
@@ -17,9 +18,15 @@ void clip_polygon(std::vector<ClipVertex> &polygon, const glm::vec4 &plane,
     const float da = glm::dot(plane, a.clip), db = glm::dot(plane, b.clip);
     if (da >= 0.0f) scratch.push_back(a);
     if ((da >= 0.0f) != (db >= 0.0f)) {
-      const float t = da / (da - db);
-      scratch.push_back({a.clip + (b.clip - a.clip) * t, a.world + (b.world - a.world) * t,
-                         a.extra + (b.extra - a.extra) * t});
+      // From the same end of the edge whichever way it is walked, so that two polygons sharing
+      // the edge (neighbouring triangles) get the very same point and leave no crack between.
+      const bool forward = std::tie(a.clip.x, a.clip.y, a.clip.z, a.clip.w) <
+                           std::tie(b.clip.x, b.clip.y, b.clip.z, b.clip.w);
+      const ClipVertex &p = forward ? a : b, &q = forward ? b : a;
+      const float dp = forward ? da : db, dq = forward ? db : da;
+      const float t = dp / (dp - dq);
+      scratch.push_back({p.clip + (q.clip - p.clip) * t, p.world + (q.world - p.world) * t,
+                         p.extra + (q.extra - p.extra) * t});
     }
   }
   polygon.swap(scratch);

@@ -1,14 +1,17 @@
-// Stencil shadow volumes, pass by pass. Spaces: model and world (right-handed, y up); camera eye
-// and clip through a projection whose far plane is at infinity (GL convention); GL window
-// coordinates of Glide's back buffer (row 0 at the bottom; the shim flips rows on every read).
-// Points at infinity are homogeneous world points with w = 0: a direction away from the light.
+// Stencil shadow volumes, pass by pass: ambient, the volumes (stencil_volume_geometry.cpp) counted
+// into the stencil buffer, each light's lit pass, and the mask. Spaces: model and world
+// (right-handed, y up); camera eye and clip through a projection whose far plane is at infinity
+// (GL convention); GL window coordinates of Glide's back buffer (row 0 at the bottom; the shim
+// flips rows on every read). Volumes are homogeneous world points, w = 0 away from the light.
 #include "techniques/stencil_volume_shadow.h"
 
 #include "techniques/gl_api.h"
+#include "techniques/gl_beam_mask.h"
 #include "techniques/gl_light_units.h"
 #include "scene/lighting.h"
 #include "techniques/projection.h"
 #include "scene/spotlight.h"
+#include "techniques/stencil_volume_geometry.h"
 
 #include <glide_shim.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -16,26 +19,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <set>
 #include <string>
-#include <tuple>
-#include <utility>
+#include <vector>
 
 namespace gs {
 namespace {
 
-std::pair<glm::uint, glm::uint> undirected(const glm::uvec3 &edge) {
-  return {std::min(edge.x, edge.y), std::max(edge.x, edge.y)};
-}
-
-// The end of the run of `edges` (sorted by undirected edge) that starts at `first`.
-std::size_t end_of_edge(const std::vector<glm::uvec3> &edges, std::size_t first) {
-  std::size_t end = first + 1;
-  while (end < edges.size() && undirected(edges[end]) == undirected(edges[first])) ++end;
-  return end;
-}
+using stencil_volume::build_volumes;
+using stencil_volume::Caster;
 
 // Points at infinity land at NDC depth 1 - kInfinityEpsilon instead of 1 (Kwoon, equations 3-7),
 // so rounding cannot push the volumes' far ends past the far clip plane: about 8 steps of the
@@ -45,24 +38,6 @@ constexpr float kInfinityEpsilon = 1.0e-6f;
 using Clock = std::chrono::steady_clock;
 double elapsed_ms(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-
-
-
-// Whether `probe` may touch the shadow volume that `caster` casts from a point light at `light`.
-// Every point of the volume lies on a ray from the light through a caster point, beyond it: in
-// the cone around the sphere, no nearer the light than the sphere's nearest point.
-bool may_touch_volume(const glm::vec3 &light, const Sphere &caster, const Sphere &probe) {
-  const glm::vec3 to_caster = caster.centre - light, to_probe = probe.centre - light;
-  const float caster_distance = glm::length(to_caster), probe_distance = glm::length(to_probe);
-  if (caster_distance <= caster.radius || probe_distance <= probe.radius) return true;
-  if (probe_distance + probe.radius < caster_distance - caster.radius) return false;
-  const float cone = std::asin(caster.radius / caster_distance);
-  const float spread = std::asin(probe.radius / probe_distance);
-  const float angle = std::acos(std::clamp(
-      glm::dot(to_caster, to_probe) / (caster_distance * probe_distance), -1.0f, 1.0f));
-  return angle <= cone + spread + 1e-4f;  // a margin for the rounding of acos near the edge
 }
 
 // Kwoon's equation 7 in GL's convention (Lengyel): the camera's frustum with its far plane at
@@ -86,12 +61,6 @@ struct Surface {
   std::vector<glm::vec3> world, normal;  // world space, per vertex
   std::vector<glm::vec3> drawn;          // world minus FrameData::origin, what GL is given
   std::vector<glm::vec4> color;          // per vertex, rewritten by each pass
-};
-
-// A closed caster, welded, in world space.
-struct Caster {
-  EdgeMesh mesh;
-  std::vector<glm::vec3> world;  // per EdgeMesh position
 };
 
 struct FrameData {
@@ -139,35 +108,6 @@ void prepare_casters(const Scene &scene, FrameData &frame) {
       caster.world.emplace_back(object.model_to_world * glm::vec4(p, 1.0f));
     }
     frame.casters.push_back(std::move(caster));
-  }
-}
-
-// Every caster's shadow volume from a point light at `light`, as outward-facing triangles in
-// homogeneous world coordinates relative to `origin`: the silhouette extruded to infinity and,
-// for z-fail, closed by the light-facing triangles (front cap) and the back-facing ones sent to
-// infinity (back cap).
-void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light,
-                   const glm::vec3 &origin, bool caps, std::vector<glm::vec4> &out) {
-  out.clear();
-  for (const Caster &caster : casters) {
-    const std::vector<bool> facing = light_facing(caster.mesh, caster.world, light);
-    const auto on = [&](glm::uint i) { return glm::vec4(caster.world[i] - origin, 1.0f); };
-    const auto beyond = [&](glm::uint i) { return glm::vec4(caster.world[i] - light, 0.0f); };
-    for (const SilhouetteEdge &e : find_silhouette(caster.mesh, facing)) {
-      // The side walks the edge against the light-facing triangle, as its neighbour on the
-      // volume's surface must for both to face outward.
-      out.insert(out.end(), {on(e.to), on(e.from), beyond(e.from),
-                             on(e.to), beyond(e.from), beyond(e.to)});
-    }
-    if (!caps) continue;
-    for (std::size_t t = 0; t < caster.mesh.triangles.size(); ++t) {
-      const glm::uvec3 &c = caster.mesh.triangles[t];
-      if (facing[t]) {
-        out.insert(out.end(), {on(c.x), on(c.y), on(c.z)});
-      } else {
-        out.insert(out.end(), {beyond(c.x), beyond(c.y), beyond(c.z)});
-      }
-    }
   }
 }
 
@@ -230,14 +170,6 @@ void set_frame_state(const GlApi &gl, const FrameData &frame) {
   gl.glEnableClientState(GL_COLOR_ARRAY);
 }
 
-// A scene holding only `light` and no ambient: shade_vertex then gives that light's direct term.
-Scene light_alone(const SpotLight &light) {
-  Scene scene;
-  scene.ambient = glm::vec3(0.0f);
-  scene.lights = {light};
-  return scene;
-}
-
 class StencilVolumeShadow final : public ShadowTechnique {
  public:
   explicit StencilVolumeShadow(const TechniqueOptions &options) : mode_(options.volume_mode) {}
@@ -246,7 +178,10 @@ class StencilVolumeShadow final : public ShadowTechnique {
     FrameReport report;
     const auto frame_start = Clock::now();
     double ms[3] = {};
-    if (!begin(report.warnings)) return report;
+    if (!begin(report.warnings)) {
+      report.errors = report.warnings;  // no shadow at all
+      return report;
+    }
     auto start = Clock::now();
     const auto finish_step = [&](int step) {
       if (synchronous) gl_.glFinish();
@@ -261,10 +196,10 @@ class StencilVolumeShadow final : public ShadowTechnique {
     finish_step(0);
     prepare_casters(scene, frame);  // 2
     for (const std::string &name : frame.open_casters) {
-      if (warned_.insert(name).second) {
-        report.warnings.push_back("stencil-volume: '" + name +
-                                  "' is not a closed mesh, so it casts no shadow volume");
-      }
+      // Every frame it misses a shadow (an error); the warning is given once.
+      report.errors.push_back("stencil-volume: '" + name +
+                              "' is not a closed mesh, so it casts no shadow volume");
+      if (warned_.insert(name).second) report.warnings.push_back(report.errors.back());
     }
     finish_step(1);
     std::vector<glm::vec4> volumes;
@@ -305,22 +240,24 @@ class StencilVolumeShadow final : public ShadowTechnique {
       const bool z_fail = uses_z_fail(scene, light);
       build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
-      // White where this light would reach the visible surface (alpha > 0: what it adds to a
-      // white surface, so cone and facing as in shade_vertex) but the count is not 0.
-      const Scene alone = light_alone(light);
+      // White where the count is not 0 and this light shines on the visible surface: alpha =
+      // (the surface faces the light, per vertex) x (the beam's footprint, per pixel) at least
+      // 1/2, the one definition of shadow (technique.h).
       for (Surface &surface : frame.surfaces) {
         for (std::size_t i = 0; i < surface.world.size(); ++i) {
-          const glm::vec3 reach =
-              shade_vertex(alone, surface.world[i], surface.normal[i], glm::vec3(1.0f));
-          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, std::max({reach.r, reach.g, reach.b}));
+          const bool faces = glm::dot(surface.normal[i], light.position - surface.world[i]) > 0.0f;
+          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, faces ? 1.0f : 0.0f);
         }
       }
+      GlBeamMask footprint(gl_, light, 0, frame.origin);
+      footprint.bind();
       gl_.glEnable(GL_ALPHA_TEST);
-      gl_.glAlphaFunc(GL_GREATER, 0.0f);
+      gl_.glAlphaFunc(GL_GEQUAL, 0.5f);
       gl_.glDepthFunc(GL_EQUAL);
       gl_.glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
       draw_surfaces(gl_, frame.surfaces, true);
       gl_.glDisable(GL_ALPHA_TEST);
+      footprint.release();
     }
     glideShimEndGL();
   }
@@ -412,101 +349,6 @@ class StencilVolumeShadow final : public ShadowTechnique {
 };
 
 }  // namespace
-
-EdgeMesh build_edge_mesh(const Mesh &mesh) {
-  EdgeMesh result;
-  const std::size_t n = mesh.positions.size();
-  for (const glm::vec3 &p : mesh.positions) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return result;
-  }
-  std::vector<glm::uint> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](glm::uint a, glm::uint b) {
-    const glm::vec3 &p = mesh.positions[a], &q = mesh.positions[b];
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  });
-  std::vector<glm::uint> welded(n);
-  for (glm::uint i : order) {
-    if (result.positions.empty() || result.positions.back() != mesh.positions[i]) {
-      result.positions.push_back(mesh.positions[i]);
-    }
-    welded[i] = static_cast<glm::uint>(result.positions.size() - 1);
-  }
-  for (const glm::uvec3 &t : mesh.triangles) {
-    if (t.x >= n || t.y >= n || t.z >= n) return EdgeMesh{};
-    const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
-    // Two corners welded together: no area, and its edges (a->a, a->b, b->a) cancel out.
-    if (w.x == w.y || w.y == w.z || w.z == w.x) continue;
-    // Three distinct corners on one line: no area either, so it bounds nothing; its edges
-    // (a->m, m->b, b->a) would otherwise make a closed surface look open.
-    const glm::vec3 &a = result.positions[w.x], &b = result.positions[w.y],
-                    &c = result.positions[w.z];
-    if (glm::cross(b - a, c - a) == glm::vec3(0.0f)) continue;
-    const auto index = static_cast<glm::uint>(result.triangles.size());
-    result.triangles.push_back(w);
-    for (const glm::uvec3 &edge : {glm::uvec3(w.x, w.y, index), glm::uvec3(w.y, w.z, index),
-                                   glm::uvec3(w.z, w.x, index)}) {
-      result.edges.push_back(edge);
-    }
-  }
-  std::sort(result.edges.begin(), result.edges.end(),
-            [](const glm::uvec3 &a, const glm::uvec3 &b) { return undirected(a) < undirected(b); });
-  result.closed = true;
-  for (std::size_t first = 0, end = 0; first < result.edges.size(); first = end) {
-    end = end_of_edge(result.edges, first);
-    int balance = 0;  // walks low -> high minus walks high -> low
-    for (std::size_t k = first; k < end; ++k) {
-      balance += result.edges[k].x < result.edges[k].y ? 1 : -1;
-    }
-    if (balance != 0) result.closed = false;
-  }
-  return result;
-}
-
-std::vector<bool> light_facing(const EdgeMesh &mesh, const std::vector<glm::vec3> &world,
-                               const glm::vec3 &light) {
-  std::vector<bool> facing(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const glm::vec3 &a = world[mesh.triangles[t].x], &b = world[mesh.triangles[t].y],
-                    &c = world[mesh.triangles[t].z];
-    facing[t] = glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;  // edge-on counts as away
-  }
-  return facing;
-}
-
-std::vector<SilhouetteEdge> find_silhouette(const EdgeMesh &mesh, const std::vector<bool> &facing) {
-  std::vector<SilhouetteEdge> silhouette;
-  // Per undirected edge, the light-facing walks low -> high minus those high -> low: 0 where both
-  // sides face the same way; where several parts meet at one edge, each unmatched walk counts.
-  for (std::size_t first = 0, end = 0; first < mesh.edges.size(); first = end) {
-    end = end_of_edge(mesh.edges, first);
-    const auto [low, high] = undirected(mesh.edges[first]);
-    int walks = 0;
-    for (std::size_t k = first; k < end; ++k) {
-      if (facing[mesh.edges[k].z]) walks += mesh.edges[k].x < mesh.edges[k].y ? 1 : -1;
-    }
-    for (; walks > 0; --walks) silhouette.push_back({low, high});
-    for (; walks < 0; ++walks) silhouette.push_back({high, low});
-  }
-  return silhouette;
-}
-
-bool near_plane_may_be_in_shadow(const Scene &scene, const SpotLight &light) {
-  const Camera &camera = scene.camera;
-  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  const float half_height = camera.near_plane * std::tan(glm::radians(camera.fov_degrees) * 0.5f);
-  const float half_width =
-      half_height * static_cast<float>(scene.width) / static_cast<float>(scene.height);
-  // A sphere around the near-plane rectangle, large enough to hold the camera position too.
-  const Sphere near_plane{camera.position + forward * camera.near_plane,
-                          std::sqrt(camera.near_plane * camera.near_plane +
-                                    half_width * half_width + half_height * half_height)};
-  for (const SceneObject &object : scene.objects) {
-    if (!object.casts_shadow || caster_mesh(object).triangles.empty()) continue;
-    if (may_touch_volume(light.position, caster_bounds(object), near_plane)) return true;
-  }
-  return false;
-}
 
 std::unique_ptr<ShadowTechnique> make_stencil_volume_shadow(const TechniqueOptions &options) {
   return std::make_unique<StencilVolumeShadow>(options);

@@ -46,9 +46,10 @@ class ProjectedTexture final : public ShadowTechnique {
     for (int step = 0; step < 5; ++step) report.steps.emplace_back(kSteps[step], frame_.times.ms[step]);
     report.total_ms = frame_.times.total_ms;
     report.warnings = frame_.warnings;
+    report.errors = frame_.errors;
     return report;
   }
-  void render_mask(const Scene &) override { render_shadow_mask(options_, frame_); }
+  void render_mask(const Scene &scene) override { render_shadow_mask(scene, options_, frame_); }
 
  private:
   ProjectedShadowOptions options_;

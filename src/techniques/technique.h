@@ -1,7 +1,10 @@
 // One interface for every shadow technique: chosen by name, each renders a whole frame of a
 // scene into Glide's back buffer, reports the time of its own steps, and can draw the same kind
-// of shadow mask (white where it took a light away from a visible pixel, black elsewhere), so the
-// techniques can be compared on equal terms.
+// of shadow mask, so the techniques can be compared on equal terms. The mask is white where the
+// pixel is in shadow, by one definition for every technique and the ground truth
+// (docs/results.md, "What counts as shadow"): some light that shines on the visible point (in
+// its beam, the surface facing it) has at least half of its view of the point blocked by a
+// caster other than the receiver itself; black elsewhere.
 #pragma once
 
 #include "techniques/projected_shadow.h"
@@ -17,7 +20,12 @@ namespace gs {
 struct FrameReport {
   std::vector<std::pair<std::string, double>> steps;  // step name, milliseconds
   double total_ms = 0.0;
-  std::vector<std::string> warnings;                  // what the user should know (once each)
+  // What the user should know (once each), errors among them, so that a caller that only shows
+  // warnings still shows every error.
+  std::vector<std::string> warnings;
+  // Shadows this frame should show and does not (a caster or a light left without its shadow,
+  // each naming them): the frame is wrong, and no caller may report it as a success.
+  std::vector<std::string> errors;
 };
 
 class ShadowTechnique {
@@ -32,7 +40,11 @@ class ShadowTechnique {
 
 struct TechniqueOptions {
   ProjectedShadowOptions projected;  // projected texture; its `size` is every map's side
-  float depth_bias_slope = 1.0f;     // depth map: glPolygonOffset factor
+  // Depth map: glPolygonOffset factor and units. Slope 2, units 4: chosen with the acne sweep
+  // (bench/hard_case_sweeps acne, docs/results.md): slope 1 leaves acne on casters' silhouettes
+  // with nearest filtering, 2 removes it, and nothing up to 8 lifts a shadow off its contact
+  // line (peter-panning starts at 64).
+  float depth_bias_slope = 2.0f;
   float depth_bias_units = 4.0f;     // depth map: glPolygonOffset units
   bool depth_map_linear = true;      // depth map: percentage-closer (GL_LINEAR) or nearest
   int depth_map_bits = 24;           // depth map: 16 or 24-bit depth texture

@@ -212,7 +212,11 @@ TEST_F(DepthMapShadowTest, NearestGivesTwoLevelsAndLinearIntermediateOnesAtTheEd
   for (std::size_t i = 0; i < nearest.size(); ++i)
     other += nearest[i] != lit[i] && nearest[i] != ambient[i];
   EXPECT_EQ(other, 0) << "nearest lookups gave levels other than lit and unlit";
-  EXPECT_GT(intermediate(frame(scene, options(true))), 20) << "no percentage-closer edge";
+  // A 32-texel map, so the percentage-closer ramp (a texel wide) spans pixels: the map's frustum
+  // is fitted to the box (issue 14), whose shadow a 256-texel map resolves finer than a pixel.
+  gs::TechniqueOptions coarse = options(true);
+  coarse.projected.size = 32;
+  EXPECT_GT(intermediate(frame(scene, coarse)), 20) << "no percentage-closer edge";
 }
 
 TEST_F(DepthMapShadowTest, AConeTooWideForAFrustumIsReportedAndLeftUnshadowed) {

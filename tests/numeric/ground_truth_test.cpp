@@ -194,6 +194,71 @@ TEST(GroundTruthTest, ObjectShadowingItselfIsSelfShadowOnly) {
   EXPECT_GT(floor_shadow, 100);
 }
 
+// casts_shadow false: the object blocks no light, neither another object's nor its own, as no
+// technique draws it into a shadow map, a volume or a shadow texture.
+TEST(GroundTruthTest, AnObjectThatCastsNoShadowBlocksNoLight) {
+  gs::Scene scene = box_over_floor();
+  const gs::GroundTruth casting = truth_of(scene);
+  ASSERT_GT(count(casting.shadow), 500);
+  scene.objects[kBox].casts_shadow = false;
+  const gs::GroundTruth silent = truth_of(scene);
+  EXPECT_EQ(count(silent.shadow), 0) << "the box still darkens the floor";
+  EXPECT_EQ(count(silent.self_shadow), 0);
+  EXPECT_EQ(silent.object, casting.object) << "it is still seen";
+  for (std::size_t p = 0; p < silent.object.size(); ++p) {
+    EXPECT_NE(silent.reach[p], gs::LightReach::Blocked) << "pixel " << p;
+  }
+  // An object that does not cast does not shadow itself either: the slab-and-pillar of
+  // ObjectShadowingItselfIsSelfShadowOnly has no self-shadow once it casts nothing.
+  gs::Mesh l_shape = gs::make_box({1.5f, 0.1f, 1.5f});
+  l_shape.append(gs::make_box({0.25f, 0.75f, 0.25f}),
+                 glm::translate(glm::mat4(1.0f), {0.0f, 0.85f, 0.0f}));
+  scene.objects[kBox] = object("slab and pillar", l_shape, {0, 0.1f, 0});
+  scene.objects[kBox].casts_shadow = false;
+  scene.lights[0].position = {3, 8, 0};
+  const gs::GroundTruth slab = truth_of(scene);
+  EXPECT_EQ(count(slab.self_shadow), 0);
+  EXPECT_EQ(count(slab.shadow), 0);
+}
+
+// receives_shadow false: the object is lit wherever the light reaches it, even behind a caster,
+// as every technique leaves it unshadowed; other objects still block light from the rest.
+TEST(GroundTruthTest, AnObjectThatReceivesNoShadowIsNeverInShadow) {
+  gs::Scene scene = box_over_floor();
+  scene.objects.push_back(object("plate", gs::make_plane(0.6f, 1), {0, 3.5f, 0}));
+  const int plate = static_cast<int>(scene.objects.size() - 1);
+  const gs::GroundTruth receiving = truth_of(scene);
+  int shadowed_box = 0;
+  for (std::size_t p = 0; p < receiving.object.size(); ++p)
+    shadowed_box += receiving.object[p] == int(kBox) && receiving.shadow[p] == 1;
+  ASSERT_GT(shadowed_box, 100) << "the plate no longer shadows the box's top";
+  scene.objects[kBox].receives_shadow = false;
+  const gs::GroundTruth refusing = truth_of(scene);
+  int box_pixels = 0, floor_shadow = 0;
+  for (std::size_t p = 0; p < refusing.object.size(); ++p) {
+    if (refusing.object[p] == int(kBox)) {
+      ++box_pixels;
+      EXPECT_EQ(refusing.shadow[p], 0);
+      EXPECT_EQ(refusing.self_shadow[p], 0);
+      EXPECT_NE(refusing.reach[p], gs::LightReach::Blocked);
+    }
+    if (refusing.object[p] == int(kFloor)) floor_shadow += refusing.shadow[p];
+  }
+  EXPECT_GT(box_pixels, 500);
+  EXPECT_GT(floor_shadow, 500) << "the box and plate still shadow the floor";
+  EXPECT_NE(plate, int(kBox));
+  // The image agrees: the box's top is as bright as with nothing above it.
+  gs::Scene alone = box_over_floor();
+  const gs::GroundTruth unblocked = truth_of(alone);
+  int compared = 0;
+  for (std::size_t p = 0; p < refusing.object.size(); ++p) {
+    if (refusing.object[p] != int(kBox) || unblocked.object[p] != int(kBox)) continue;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(refusing.rgb[3 * p + c], unblocked.rgb[3 * p + c]);
+    ++compared;
+  }
+  EXPECT_GT(compared, 500);
+}
+
 // The techniques cull back faces, so the truth does too: from below, the one-sided floor is not
 // there and the box's bottom shows through it.
 TEST(GroundTruthTest, SurfacesSeenFromBehindAreInvisible) {

@@ -55,15 +55,8 @@ GuNccTable random_ncc(std::mt19937 &random) {
   return table;
 }
 
-class GuTextureTest : public GlideWindowTest {
+class GuTextureTest : public DecalTextureTest {
  protected:
-  void SetUp() override {
-    GlideWindowTest::SetUp();
-    grDitherMode(GR_DITHER_DISABLE);
-    guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
-    guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
-  }
-
   // A floor receding from w = 1 (bottom) to w = 12 (top) over columns [x0, x1), the texture
   // repeated twice across and six times along, so several LODs are sampled.
   static void draw_floor(float x0, float x1) {

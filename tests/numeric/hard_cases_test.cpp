@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <numeric>
 
 namespace {
@@ -54,6 +55,7 @@ struct Outcome {
   long shadowed = 0;
   gs::MaskErrors errors;
   std::vector<std::string> warnings;
+  std::vector<std::string> refusals;  // FrameReport::errors: shadows it says it could not cast
   GlideShimError glide_error = GLIDESHIM_OK;  // any vertex with NaN/inf reaching the
   std::string glide_message;                  // rasterizer is reported here by the shim
 };
@@ -71,7 +73,9 @@ Outcome run(const std::string &name, const gs::Scene &scene, const Truth &truth,
                            GR_ORIGIN_UPPER_LEFT, 2, 1))
       << glideShimGetLastErrorMessage();
   glideShimClearError();
-  outcome.warnings = technique->render(scene, false).warnings;
+  const gs::FrameReport frame = technique->render(scene, false);
+  outcome.warnings = frame.warnings;
+  outcome.refusals = frame.errors;
   technique->render_mask(scene);
   outcome.glide_error = glideShimGetLastError();
   outcome.glide_message = glideShimGetLastErrorMessage();
@@ -98,6 +102,7 @@ void report(const std::string &what, const Outcome &o) {
             << o.errors.false_light_interior * 100.0 << "%), farthest "
             << o.errors.max_distance_px << " px";
   for (const std::string &w : o.warnings) std::cout << "; warns: " << w;
+  for (const std::string &e : o.refusals) std::cout << "; ERROR: " << e;
   std::cout << "\n";
 }
 
@@ -114,32 +119,10 @@ bool finite(const GrVertex &v) {
 }
 
 // Pixels darkened where the truth says the light does not reach at all (outside its cone, or
-// the surface facing away): a shadow from nowhere, e.g. a mirrored back projection. The
-// techniques light per vertex, so the light (and a shadow taking it away) runs past the cone's
-// edge by up to one receiver triangle; `farthest` is how far, in pixels, the farthest such pixel
-// lies from a pixel the light reaches.
-// The diagonal, in pixels, of the largest floor quad (`quad` metres a side, on y = 0) the camera
-// sees at the rim of the light's cone: how far per-vertex lighting, and a shadow taking it away,
-// can run past the cone's edge.
-int quad_at_cone_rim(const gs::Scene &scene, float quad) {
-  const gs::SpotLight &light = scene.lights[0];
-  const float radius = light.position.y * std::tan(glm::radians(light.cone_degrees) * 0.5f);
-  const glm::mat4 to_clip = gs::camera_projection(scene.camera, scene.width, scene.height) *
-                            gs::camera_view(scene.camera);
-  auto pixel = [&](const glm::vec3 &p) {
-    const GrVertex v = gs::to_screen(to_clip * glm::vec4(p, 1.0f), scene.width, scene.height);
-    return glm::vec2(v.x, v.y);
-  };
-  float largest = 0.0f;
-  for (int k = 0; k < 16; ++k) {
-    const float angle = glm::radians(22.5f * static_cast<float>(k));
-    const glm::vec3 rim(light.position.x + radius * std::cos(angle), 0.0f,
-                        light.position.z + radius * std::sin(angle));
-    largest = std::max(largest, glm::length(pixel(rim) - pixel(rim + glm::vec3(quad, 0.0f, quad))));
-  }
-  return static_cast<int>(std::ceil(largest));
-}
-
+// the surface facing away): a shadow from nowhere, e.g. a mirrored back projection, or a shadow
+// beyond the beam. Every technique clips its shadows to the beam per pixel (issue 14), so
+// `farthest` (how far, in pixels, the farthest such pixel lies from a pixel the light reaches)
+// is at most a pixel: the beam's edge sampled at pixel centres.
 struct Unlit {
   long pixels = 0;
   int farthest = 0;
@@ -268,7 +251,6 @@ TEST(HardCases, ReceiverBetweenLightAndCasterStaysLit) {
 TEST(HardCases, CasterAcrossTheLightFrustumBorderShadowsOnlyInsideIt) {
   const gs::Scene scene = hard_cases::load("frustum_border.json");
   const Truth truth = truth_of(scene);
-  const int rim = quad_at_cone_rim(scene, 0.5f);  // the floor's 20 divisions of 10 m
   for (const std::string &name : kTechniques) {
     const Outcome o = run(name, scene, truth);
     report(name, o);
@@ -276,34 +258,26 @@ TEST(HardCases, CasterAcrossTheLightFrustumBorderShadowsOnlyInsideIt) {
     const Unlit unlit = shadow_where_unlit(o, truth, scene.width, scene.height);
     std::cout << "    beyond the cone: " << unlit.pixels << " px, farthest " << unlit.farthest
               << " px\n";
-    EXPECT_LE(unlit.farthest, rim) << name << ": shadow beyond the per-vertex light";
+    EXPECT_LE(unlit.farthest, 1) << name << ": shadow beyond the cone";
     EXPECT_EQ(o.errors.false_light_interior, 0.0) << name << ": shadow missing inside the cone";
   }
 }
 
-// Case 3b. The light just above the box: the projected techniques cannot keep a clean border,
-// say so and cast nothing; the others still shadow the floor; nothing breaks.
-TEST(HardCases, LightTooCloseForACleanBorderIsReportedAndNothingBreaks) {
+// Case 3b. The light just above the box: no view fitted to the box's bounding sphere keeps a
+// clean border, so the projected techniques fit their view to what the cone holds of the box
+// (issue 14) and cast the whole shadow like the others.
+TEST(HardCases, LightTooCloseForTheBoundingSphereStillCastsTheShadow) {
   const gs::Scene scene = hard_cases::load("light_too_close.json");
   const Truth truth = truth_of(scene);
   ASSERT_GT(truth.shadow_pixels, 1000);
-  const int rim = quad_at_cone_rim(scene, 0.5f);
   for (const std::string &name : kTechniques) {
     const Outcome o = run(name, scene, truth);
     report(name, o);
     expect_clean_glide(name, o);
+    EXPECT_TRUE(o.refusals.empty()) << name;
     const Unlit unlit = shadow_where_unlit(o, truth, scene.width, scene.height);
-    std::cout << "    beyond the cone: " << unlit.pixels << " px, farthest " << unlit.farthest
-              << " px\n";
-    EXPECT_LE(unlit.farthest, rim) << name << ": shadow beyond the per-vertex light";
-    if (name.rfind("projected", 0) == 0) {
-      ASSERT_EQ(o.warnings.size(), 1u) << name;
-      EXPECT_NE(o.warnings[0].find("too close"), std::string::npos) << o.warnings[0];
-      EXPECT_EQ(o.shadowed, 0) << name;
-    } else {
-      // The others have no border to keep: the whole shadow is there.
-      EXPECT_EQ(o.errors.false_light_interior, 0.0) << name;
-    }
+    EXPECT_LE(unlit.farthest, 1) << name << ": shadow beyond the cone";
+    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, 0.001) << name;
   }
 }
 
@@ -332,8 +306,8 @@ TEST(HardCases, CoordinatesFarOutsideTheMapClampToNoShadow) {
 TEST(HardCases, GrazingLightGivesNoAcneAtTheDefaultBias) {
   gs::TechniqueOptions bits16;
   bits16.depth_map_bits = 16;
-  gs::TechniqueOptions half_slope;
-  half_slope.depth_bias_slope = 0.5f;
+  gs::TechniqueOptions no_slope;  // units only: acne over most of the plane from 30 degrees
+  no_slope.depth_bias_slope = 0.0f;
   for (float degrees : {0.0f, 45.0f, 60.0f, 75.0f, 85.0f, 89.0f}) {
     const std::string angle = " at " + std::to_string(static_cast<int>(degrees)) + " degrees";
     const gs::Scene scene = hard_cases::grazing_plane(degrees);
@@ -349,8 +323,8 @@ TEST(HardCases, GrazingLightGivesNoAcneAtTheDefaultBias) {
     report("depth-map 16-bit" + angle, o16);
     EXPECT_EQ(o16.shadowed, 0) << "16-bit" << angle;
     if (degrees >= 45.0f) {  // the check sees acne where there is some
-      const Outcome acne = run("depth-map", scene, truth, half_slope);
-      report("depth-map slope 0.5" + angle, acne);
+      const Outcome acne = run("depth-map", scene, truth, no_slope);
+      report("depth-map slope 0" + angle, acne);
       EXPECT_GT(acne.errors.false_shadow_interior, 0.3) << angle;
     }
   }
@@ -526,10 +500,11 @@ TEST(HardCases, ShadowMapSizesFromOneToAThousand) {
       report(std::string(name) + " size " + std::to_string(size), o);
       expect_clean_glide(name, o);
       if (std::string(name) == "projected" && (size < 32 || size > 512)) {
-        // Voodoo textures are 256 at most (512 is four tiles): refused, named, nothing cast.
-        ASSERT_EQ(o.warnings.size(), 1u) << size;
-        EXPECT_NE(o.warnings[0].find("shadow size " + std::to_string(size)), std::string::npos)
-            << o.warnings[0];
+        // Voodoo textures are 256 at most (512 is four tiles): refused, named, nothing cast;
+        // an error, since the frame misses its shadow.
+        ASSERT_EQ(o.refusals.size(), 1u) << size;
+        EXPECT_NE(o.refusals[0].find("shadow size " + std::to_string(size)), std::string::npos)
+            << o.refusals[0];
         EXPECT_EQ(o.shadowed, 0) << size;
       } else if (size >= 32) {
         // A texel of 32 over the box's fitted view (projected) or over the 60-degree cone
@@ -562,4 +537,96 @@ TEST(HardCases, ScreenSizesFromOnePixel) {
       }
     }
   }
+}
+
+// ---- issue 14: shadows that are never silently wrong ----------------------------------------
+// Scenes the project had not seen (tests/hard_cases/README.md lists them by class). Every
+// technique either reports success with interior errors (wrong pixels more than a pixel from
+// the true edge) on at most 0.1% of the receiver pixels, or refuses with an error naming what it
+// cannot shadow (`refusals`: technique -> a part of the message) and casts nothing from it.
+namespace {
+
+constexpr double kInteriorBudget = 0.001;
+
+void expect_right_or_refused(const std::string &file,
+                             const std::map<std::string, std::string> &refusals = {},
+                             bool only_in_beam = true) {
+  const gs::Scene scene = hard_cases::load(file);
+  const Truth truth = truth_of(scene);
+  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
+  for (const std::string &name : kTechniques) {
+    const Outcome o = run(name, scene, truth);
+    report(file + " " + name, o);
+    expect_clean_glide(name, o);
+    const auto refused = refusals.find(name);
+    if (refused != refusals.end()) {
+      ASSERT_FALSE(o.refusals.empty()) << file << " " << name << ": should refuse, not pass";
+      EXPECT_NE(o.refusals[0].find(refused->second), std::string::npos) << o.refusals[0];
+      continue;
+    }
+    for (const std::string &e : o.refusals) ADD_FAILURE() << file << " " << name << ": " << e;
+    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
+        << file << " " << name;
+    if (only_in_beam) {
+      EXPECT_LE(shadow_where_unlit(o, truth, scene.width, scene.height).farthest, 1)
+          << file << " " << name << ": shadow where the light does not shine";
+    }
+  }
+}
+
+}  // namespace
+
+// A caster larger than the view a bounding sphere allows, the light behind or beside it: the
+// projected techniques fit their view to what the cone holds of it; one that surrounds the
+// light is refused by name (projected) or as an open mesh (stencil volumes).
+TEST(HardCases, WideCasterBehindTheLight) { expect_right_or_refused("wall_behind_light.json"); }
+TEST(HardCases, LongCasterBesideTheLight) { expect_right_or_refused("bar_beside_light.json"); }
+TEST(HardCases, CasterSurroundingTheLightIsRefusedByName) {
+  expect_right_or_refused("light_inside_tube.json",
+                          {{"projected", "light 0 and 'tube': no single projection"},
+                           {"projected-chroma", "light 0 and 'tube': no single projection"},
+                           {"stencil-volume", "'tube' is not a closed mesh"}});
+}
+
+// Casters longer than the beam is wide: their shadows stop at the beam's edge, per pixel, for
+// a round cone, a square beam map, and a cone whose rim crosses coarse floor triangles.
+TEST(HardCases, ShadowStopsAtTheNarrowConesEdge) {
+  expect_right_or_refused("bar_across_narrow_cone.json");
+}
+TEST(HardCases, ShadowStopsAtTheSquareBeamsSides) {
+  expect_right_or_refused("plank_square_beam.json");
+}
+TEST(HardCases, ShadowStopsAtTheConeInsideCoarseTriangles) {
+  expect_right_or_refused("two_rods_wide_cone.json");
+}
+TEST(HardCases, ShadowStopsAtTheGobosBars) { expect_right_or_refused("gobo_bars.json"); }
+
+// casts_shadow and receives_shadow, as the truth and every technique honour them.
+TEST(HardCases, SceneFlagsAreHonouredByTruthAndTechniques) {
+  expect_right_or_refused("flags_sign_and_ball.json");
+  const gs::Scene scene = hard_cases::load("flags_sign_and_ball.json");
+  const Truth truth = truth_of(scene);
+  long ball = 0, ball_shadowed = 0;
+  for (std::size_t i = 0; i < truth.exact.object.size(); ++i) {
+    if (truth.exact.object[i] != 4) continue;
+    ++ball;
+    ball_shadowed += truth.exact.shadow[i] + truth.exact.self_shadow[i];
+  }
+  EXPECT_GT(ball, 200);
+  EXPECT_EQ(ball_shadowed, 0) << "the ball receives no shadow";
+  for (const std::string &name : kTechniques) {
+    const Outcome o = run(name, scene, truth);
+    long darkened = 0;
+    for (std::size_t i = 0; i < o.mask.size(); ++i) darkened += o.mask[i] && truth.exact.object[i] == 4;
+    EXPECT_EQ(darkened, 0) << name << ": the ball is darkened";
+  }
+}
+
+// Acne at the defaults: a plate tilted towards an oblique light, and casters whose lit sides
+// the camera sees edge-on to a light that faces it.
+TEST(HardCases, NoAcneOnATiltedPlateAtTheDefaults) {
+  expect_right_or_refused("tilted_plate_oblique.json");
+}
+TEST(HardCases, NoAcneAlongLitSilhouettesAtTheDefaults) {
+  expect_right_or_refused("light_facing_camera_posts.json");
 }

@@ -54,13 +54,10 @@ FxU16 palette_word(const GuTexPalette &palette, int index) {
   return pack565((entry >> 16) & 0xFF, (entry >> 8) & 0xFF, entry & 0xFF);
 }
 
-class TextureFormatsTest : public GlideWindowTest {
+class TextureFormatsTest : public DecalTextureTest {
  protected:
   void SetUp() override {
-    GlideWindowTest::SetUp();
-    grDitherMode(GR_DITHER_DISABLE);
-    guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
-    guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+    DecalTextureTest::SetUp();
     guAlphaSource(GR_ALPHASOURCE_TEXTURE_ALPHA);
   }
 

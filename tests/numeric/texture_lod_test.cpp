@@ -24,13 +24,10 @@ int level_of_color(FxU16 word) {
 
 using Plane = TexturePlane;  // see glide_window.h
 
-class TextureLodTest : public GlideWindowTest {
+class TextureLodTest : public DecalTextureTest {
  protected:
   void SetUp() override {
-    GlideWindowTest::SetUp();
-    grDitherMode(GR_DITHER_DISABLE);
-    guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
-    guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+    DecalTextureTest::SetUp();
     grTexClampMode(GR_TMU0, GR_TEXTURECLAMP_WRAP, GR_TEXTURECLAMP_WRAP);
   }
 

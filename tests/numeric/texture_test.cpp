@@ -9,13 +9,10 @@
 
 namespace {
 
-class TextureTest : public GlideWindowTest {
+class TextureTest : public DecalTextureTest {
  protected:
   void SetUp() override {
-    GlideWindowTest::SetUp();
-    grDitherMode(GR_DITHER_DISABLE);
-    guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
-    guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+    DecalTextureTest::SetUp();
     guAlphaSource(GR_ALPHASOURCE_TEXTURE_ALPHA);
   }
 

@@ -8,9 +8,11 @@ rebuild the files:
     python3 tests/sdk/make_3df.py tests/sdk/data
 """
 import colorsys
-import struct
 import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+from threedf import header, palette, words16  # noqa: E402
 
 
 def yiq_mipmap():
@@ -19,11 +21,11 @@ def yiq_mipmap():
     y_table = [min(255, i * 17) for i in range(16)]
     i_table = [(0, 0, 0), (60, -20, -40), (-60, 20, 40), (30, 30, -60)]
     q_table = [(0, 0, 0), (-30, 40, 10), (30, -40, -10), (50, -50, 50)]
-    out = b"3df v1.1\nyiq\nlod range: 1 64\naspect ratio: 1 1\n"
-    out += b"".join(struct.pack(">H", y) for y in y_table)
+    out = header("yiq", 1, 64, "1 1")
+    out += words16(y_table)
     for table in (i_table, q_table):
         for vector in table:
-            out += b"".join(struct.pack(">H", c & 0xFFFF) for c in vector)
+            out += words16(vector)
     level = 0
     side = 64
     while side >= 1:
@@ -40,10 +42,9 @@ def yiq_mipmap():
 
 def p8_stripes():
     """P_8, 64x32 (aspect 2:1), one level: diagonal stripes through a 256-entry hue palette."""
-    out = b"3df v1.1\np8\nlod range: 64 64\naspect ratio: 2 1\n"
-    for i in range(256):
-        r, g, b = colorsys.hsv_to_rgb(i / 256.0, 0.8, 1.0)
-        out += struct.pack(">I", (int(r * 255) << 16) | (int(g * 255) << 8) | int(b * 255))
+    out = header("p8", 64, 64, "2 1")
+    hues = [colorsys.hsv_to_rgb(i / 256.0, 0.8, 1.0) for i in range(256)]
+    out += palette([(int(r * 255), int(g * 255), int(b * 255)) for r, g, b in hues])
     for y in range(32):
         for x in range(64):
             out += bytes([(x * 4 + y * 2) & 0xFF])

@@ -65,3 +65,10 @@ void GlideWindowTest::draw_plane(const TexturePlane &plane) {
   grDrawTriangle(&v[0], &v[1], &v[2]);
   grDrawTriangle(&v[0], &v[2], &v[3]);
 }
+
+void DecalTextureTest::SetUp() {
+  GlideWindowTest::SetUp();
+  grDitherMode(GR_DITHER_DISABLE);
+  guTexCombineFunction(GR_TMU0, GR_TEXTURECOMBINE_DECAL);
+  guColorCombineFunction(GR_COLORCOMBINE_DECAL_TEXTURE);
+}

@@ -41,6 +41,13 @@ class GlideWindowTest : public ::testing::Test {
   static void expect_no_error();
 };
 
+// The window with texels shown as they are: dithering off, TMU 0 decal, colour = texture, so a
+// pixel's 565 word is the texel as the TMU filtered it.
+class DecalTextureTest : public GlideWindowTest {
+ protected:
+  void SetUp() override;
+};
+
 // Channel helpers for 565 words.
 inline int red5(FxU16 p) { return p >> 11; }
 inline int green6(FxU16 p) { return (p >> 5) & 0x3F; }

@@ -391,7 +391,10 @@ class BadInputTest : public GlideWindowTest {
         {"grHints", [] { grHints(GR_HINT_STWHINT, GR_STWHINT_W_DIFF_TMU0); }},
         {"grSstIdle", [] { grSstIdle(); }},
         {"glideShimWritePng",
-         [] { EXPECT_EQ(glideShimWritePng(GR_BUFFER_FRONTBUFFER, "/tmp/bad_input_never_written.png"), FXFALSE); }},
+         [] {
+           const std::string path = ::testing::TempDir() + "bad_input_never_written.png";
+           EXPECT_EQ(glideShimWritePng(GR_BUFFER_FRONTBUFFER, path.c_str()), FXFALSE);
+         }},
     };
   }
 };

@@ -16,7 +16,8 @@
 namespace {
 
 std::string temp_path(const std::string &name) {
-  return (std::filesystem::temp_directory_path() / ("gu3df_test_" + name)).string();
+  // Under the build tree's test directory (TEST_TMPDIR, which ::testing::TempDir reads).
+  return ::testing::TempDir() + "gu3df_test_" + name;
 }
 
 void write_file(const std::string &path, const std::string &bytes) {

@@ -18,14 +18,8 @@ namespace {
 using gs::PlotPoint;
 using Indices = std::vector<std::size_t>;
 
-// Mirrors plot.cpp's layout (plot area in image pixels); the header keeps it private, and the
-// position test needs it to find where a point must be drawn.
-constexpr int kWidth = 900;
-constexpr int kHeight = 600;
-constexpr int kPlotLeft = 70;
-constexpr int kPlotRight = 700;
-constexpr int kPlotTop = 50;
-constexpr int kPlotBottom = 540;
+// The plot's layout (plot area in image pixels), for finding where a point must be drawn.
+using namespace gs::plot_layout;
 
 // Axis maxima 100 ms and 5% are already round, so they are the axis tops.
 std::vector<PlotPoint> sample_points() {

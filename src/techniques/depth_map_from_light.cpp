@@ -1,0 +1,179 @@
+// Depth-map shadows, step 1: each light's frustum fitted to the casters in its beam, and the
+// casters' depth rendered from the light into that light's map. Spaces: world (the meshes, the
+// light); light view (the light at the origin looking down -z; depths in metres) and light clip
+// (GL convention); the map's texels (side x side, depth 0..1 from near to far plane).
+#include "techniques/depth_map_passes.h"
+
+#include "techniques/light_beam.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace gs::depth_map {
+namespace {
+
+constexpr float kWidestCone = 179.0f;  // degrees; wider, the square frustum degenerates
+// Map sides refused: under 32 texels a map cannot resolve a caster (at 1 the whole cone is one
+// sample), and GL's depth textures stop at 4096 here.
+constexpr int kSmallestMap = 32, kLargestMap = 4096;
+
+LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotLight &light,
+                               std::size_t index, int side) {
+  LightFrustum frustum;
+  const std::string name = "light " + std::to_string(index);
+  if (!(light.cone_degrees > 0.0f && light.cone_degrees < kWidestCone)) {
+    frustum.problem = name + ": a cone of " + std::to_string(light.cone_degrees) +
+                      " degrees has no depth-map frustum (it must be under " +
+                      std::to_string(kWidestCone) + "), so the light casts no shadow";
+    return frustum;
+  }
+  const glm::vec3 axis = light.target - light.position;
+  if (!(glm::length(axis) > 1e-6f)) {
+    frustum.problem = name +
+                      " has its target at its position: no depth-map frustum, so the "
+                      "light casts no shadow";
+    return frustum;
+  }
+  const glm::vec3 up =
+      std::abs(glm::normalize(axis).y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+  frustum.view = glm::lookAt(light.position, light.target, up);
+  float farthest = 0.0f, nearest_caster = INFINITY;  // light-view depth, metres
+  for (const WorldMesh &mesh : meshes) {
+    for (const glm::vec3 &p : mesh.position) {
+      const float depth = -(frustum.view * glm::vec4(p, 1.0f)).z;
+      farthest = std::max(farthest, depth);
+      if (mesh.object->casts_shadow) nearest_caster = std::min(nearest_caster, depth);
+    }
+  }
+  // A 1000:1 range at the most: 24 bits then still resolve about a millimetre at 10 m. (With
+  // no caster the map stays empty and any near plane will do.)
+  const float far_plane = std::max(farthest, 1e-3f) * 1.01f;
+  const float near_plane = std::clamp(nearest_caster * 0.99f, far_plane * 1e-3f, far_plane * 0.5f);
+  // The map holds only what can shadow a point the light shines on: the casters clipped to the
+  // beam (light_beam.h), seen along the light's own axis (so q is the light's depth, and the q
+  // gate and the beam stay where they are). Their box of directions, plus two texels for the
+  // percentage-closer lookup's reach, is usually far narrower than the cone, and every texel
+  // finer; a receiver outside it lies on no ray through a caster, and the lit border says so.
+  const float t = std::tan(glm::radians(light.cone_degrees) * 0.5f);
+  glm::vec2 low(-t), high(t);  // tangents x / -z, y / -z
+  const LightBeam beam = light_beam(light);
+  glm::vec2 box_low(INFINITY), box_high(-INFINITY);
+  for (const WorldMesh &mesh : meshes) {
+    if (!mesh.object->casts_shadow) continue;
+    bool whole = false;
+    for (const glm::vec3 &p : clip_to_beam(mesh.position, mesh.object->mesh.triangles, beam,
+                                           far_plane * 1e-4f, whole)) {
+      const glm::vec3 v = glm::vec3(frustum.view * glm::vec4(p, 1.0f));
+      if (!(-v.z > 0.0f)) continue;
+      const glm::vec2 tangent = glm::vec2(v.x, v.y) / -v.z;
+      box_low = glm::min(box_low, tangent);
+      box_high = glm::max(box_high, tangent);
+    }
+  }
+  if (box_low.x <= box_high.x && box_low.y <= box_high.y) {
+    const glm::vec2 width = glm::max(box_high - box_low, glm::vec2(t * 1e-4f));
+    const glm::vec2 pad =
+        width * (2.0f / std::max(static_cast<float>(side) - 4.0f, 1.0f)) + glm::vec2(t * 1e-6f);
+    low = glm::max(box_low - pad, low);
+    high = glm::min(box_high + pad, high);
+  }
+  frustum.projection = glm::frustum(low.x * near_plane, high.x * near_plane, low.y * near_plane,
+                                    high.y * near_plane, near_plane, far_plane);
+  return frustum;
+}
+
+}  // namespace
+
+void Passes::depth_from_lights(std::vector<std::string> &warnings,
+                               std::vector<std::string> &errors) {
+  gl_.glGenFramebuffers(1, &framebuffer_);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl_.glDrawBuffer(GL_NONE);
+  gl_.glReadBuffer(GL_NONE);
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthFunc(GL_LESS);
+  gl_.glDepthMask(GL_TRUE);
+  gl_.glDisable(GL_CULL_FACE);  // a caster shadows from whichever side the light sees it
+  // Pushed away from the light by the slope (light-view depth per texel) and a few depth units,
+  // so a lit surface compares nearer than its own sample (Everitt et al., "Why is polygon
+  // offset needed?").
+  gl_.glEnable(GL_POLYGON_OFFSET_FILL);
+  gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);
+  const GLint filter = options_.depth_map_linear ? GL_LINEAR : GL_NEAREST;
+  const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
+  if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
+    warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
+                       "-bit depth maps do not exist (16 or 24); using 24");
+  }
+  for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
+    maps_.push_back(0);
+    if (scene_.lights[light].is_projector()) {  // slides cast no shadows: no map, gate open
+      frustums_.emplace_back();
+      continue;
+    }
+    const GLsizei side =
+        options_.projected.size > 0 ? options_.projected.size : scene_.lights[light].shadow_size;
+    frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light, side));
+    const LightFrustum &frustum = frustums_.back();
+    if (side < kSmallestMap || side > kLargestMap) {
+      errors.push_back("depth-map: a map of " + std::to_string(side) + " texels for light " +
+                       std::to_string(light) + " is outside " + std::to_string(kSmallestMap) +
+                       ".." + std::to_string(kLargestMap) + ", so the light casts no shadow");
+      warnings.push_back(errors.back());
+      maps_.back() = 0;
+      continue;
+    }
+    if (!frustum.problem.empty()) {
+      warnings.push_back(frustum.problem);
+      errors.push_back(frustum.problem);
+      continue;
+    }
+    GLuint map = 0;
+    gl_.glGenTextures(1, &map);
+    gl_.glBindTexture(GL_TEXTURE_2D, map);
+    const GLint format =
+        options_.depth_map_bits == 16 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
+    gl_.glTexImage2D(GL_TEXTURE_2D, 0, format, side, side, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+                     nullptr);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    gl_.glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, lit_border);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+    gl_.glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_ALPHA);  // (0, 0, 0, result)
+    gl_.glBindTexture(GL_TEXTURE_2D, 0);
+    gl_.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
+    if (gl_.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      const std::string size = std::to_string(side);
+      errors.push_back("light " + std::to_string(light) + ": a " + size + "x" + size +
+                       " depth texture cannot be rendered to, so the light casts no shadow");
+      warnings.push_back(errors.back());
+      gl_.glDeleteTextures(1, &map);
+      continue;
+    }
+    maps_.back() = map;
+    gl_.glViewport(0, 0, side, side);
+    gl_.glClearDepth(1.0);  // the light's far plane (Glide's own clears leave other values)
+    gl_.glClear(GL_DEPTH_BUFFER_BIT);
+    gl_.glMatrixMode(GL_PROJECTION);
+    gl_.glLoadMatrixf(&frustum.projection[0][0]);
+    gl_.glMatrixMode(GL_MODELVIEW);
+    gl_.glLoadMatrixf(&frustum.view[0][0]);
+    // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
+    for (const WorldMesh &mesh : meshes_) {
+      if (!mesh.object->casts_shadow) continue;
+      gl_.glVertexPointer(3, GL_FLOAT, 0, mesh.position.data());
+      gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
+                         GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
+    }
+  }
+  gl_.glDisable(GL_POLYGON_OFFSET_FILL);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_framebuffer_));
+}
+
+}  // namespace gs::depth_map

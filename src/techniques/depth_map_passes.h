@@ -1,0 +1,72 @@
+// Internal to the depth-map technique: the meshes every pass draws, a light's fitted frustum and
+// the frame's GL passes, shared by depth_map_from_light.cpp (step 1: frusta and maps) and
+// depth_map_shadow.cpp (steps 2 and 3, the mask). Spaces: world (the meshes); light view and
+// light clip, GL convention (the frustum's matrices).
+#pragma once
+
+#include "techniques/gl_api.h"
+#include "techniques/technique.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gs::depth_map {
+
+// An object's vertices in world space: the arrays every pass draws.
+struct WorldMesh {
+  const SceneObject *object = nullptr;
+  std::vector<glm::vec3> position;  // world
+  std::vector<glm::vec3> normal;    // world, unit
+};
+
+// A light's frustum: along the light's axis, across the part of the cone's square (the beam's
+// circle inscribed) that the casters inside the beam cover, near and far fitted to the scene:
+// far beyond every vertex, near before every caster's vertex in front of the light. A receiver
+// nearer than that has r < 0, which compares as lit.
+struct LightFrustum {
+  glm::mat4 view{1.0f};        // world to light view
+  glm::mat4 projection{1.0f};  // light view to light clip
+  std::string problem;         // why the light has none, for the user; empty when it has one
+};
+
+// The GL objects and passes of one frame. Textures and framebuffer are made and deleted with
+// it, inside one glideShimBeginGL .. glideShimEndGL, so none outlives the window it was made in.
+class Passes {
+ public:
+  Passes(const GlApi &gl, const Scene &scene, const TechniqueOptions &options);
+  ~Passes();
+  Passes(const Passes &) = delete;
+  Passes &operator=(const Passes &) = delete;
+
+  // Step 1; a light left without its map is an error (it casts no shadow).
+  void depth_from_lights(std::vector<std::string> &warnings, std::vector<std::string> &errors);
+  void ambient_pass();                                         // step 2
+  void lit_passes();                                           // step 3
+  // The mask over the frame's depth buffer (after steps 1-3 of the same scene).
+  void mask_passes();
+
+ private:
+  void use_camera();
+  // Unit 0: light `light`'s map compared with `compare` (LEQUAL: 1 where lit); unit 1: the q
+  // gate. Texgen planes are given while the modelview is the camera's view, so they act on
+  // world coordinates (Everitt et al., Appendix A).
+  void bind_shadow_units(std::size_t light, GLenum compare);
+  void release_shadow_units();
+  void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
+  float farthest_from(const SpotLight &light) const;  // largest light-space depth, metres
+
+  const GlApi &gl_;
+  const Scene &scene_;
+  const TechniqueOptions &options_;
+  std::vector<WorldMesh> meshes_;
+  std::vector<LightFrustum> frustums_;  // per light
+  std::vector<GLuint> maps_;            // per light; 0: the light casts no shadow
+  GLuint framebuffer_ = 0;              // step 1's, depth only
+  GLuint gate_ = 0;                     // the q gate's step texture
+  GLint target_framebuffer_ = 0;        // the shim's, holding Glide's back buffer
+  GLint window_[4] = {};                // the shim's viewport: the whole window
+};
+
+}  // namespace gs::depth_map

@@ -1,0 +1,305 @@
+// The planar shadow technique's step 1 (the article's Listing 1): every caster triangle facing
+// the light clipped to each receiver triangle's plane and edges, projected from the light onto
+// that plane. Spaces: world (all geometry, and the shadow polygons it makes); light directions
+// (light view x/-z, y/-z: where the light sees a point, used only to reject pairs early).
+#include "techniques/planar_shadow.h"
+
+#include "scene/lighting.h"
+#include "techniques/light_beam.h"
+#include "techniques/stencil_volume_shadow.h"
+#include "techniques/projection.h"
+#include "techniques/scene_pass.h"
+
+#include <glide.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <tuple>
+
+namespace gs {
+namespace {
+
+// A caster point this close to the light's height above a receiver plane (as a fraction of that
+// height) would project over a thousand times farther than it is from the light: such parts are
+// cut off, since no receiver triangle reaches that far and float precision would not either.
+constexpr float kNearLightHeight = 0.999f;
+
+// Light directions of a triangle: the rectangle around its corners' (x/-z, y/-z) in light view.
+// A triangle reaching behind the light's view plane has no such rectangle and gets all of
+// direction space.
+struct DirectionBox {
+  glm::vec2 low{-INFINITY}, high{INFINITY};
+  bool overlaps(const DirectionBox &other) const {
+    return low.x <= other.high.x && other.low.x <= high.x && low.y <= other.high.y &&
+           other.low.y <= high.y;
+  }
+  void include(const DirectionBox &other) {
+    low = glm::min(low, other.low);
+    high = glm::max(high, other.high);
+  }
+};
+
+constexpr DirectionBox kEmptyBox{glm::vec2(INFINITY), glm::vec2(-INFINITY)};
+
+// An object's vertices in world space and as seen from one light.
+struct LitVertices {
+  std::vector<glm::vec3> world;
+  std::vector<glm::vec2> direction;  // light view x/-z, y/-z
+  std::vector<bool> in_front;        // in front of the light's view plane (direction valid)
+};
+
+LitVertices light_vertices(const Mesh &mesh, const glm::mat4 &model_to_world,
+                           const glm::mat4 &light_view) {
+  LitVertices lit;
+  const std::size_t n = mesh.positions.size();
+  lit.world.resize(n);
+  lit.direction.resize(n);
+  lit.in_front.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lit.world[i] = glm::vec3(model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    const glm::vec3 view = glm::vec3(light_view * glm::vec4(lit.world[i], 1.0f));
+    lit.in_front[i] = view.z < -1e-4f;
+    if (lit.in_front[i]) lit.direction[i] = glm::vec2(view.x, view.y) / -view.z;
+  }
+  return lit;
+}
+
+DirectionBox triangle_box(const LitVertices &lit, const glm::uvec3 &t) {
+  if (!lit.in_front[t.x] || !lit.in_front[t.y] || !lit.in_front[t.z]) return {};
+  return {glm::min(lit.direction[t.x], glm::min(lit.direction[t.y], lit.direction[t.z])),
+          glm::max(lit.direction[t.x], glm::max(lit.direction[t.y], lit.direction[t.z]))};
+}
+
+bool faces(const glm::vec3 &light, const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
+  return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;
+}
+
+struct CasterTriangle {
+  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
+  DirectionBox box;
+};
+
+struct Caster {
+  std::size_t object = 0;  // index into scene.objects
+  std::vector<CasterTriangle> triangles;
+  DirectionBox box = kEmptyBox;
+};
+
+// A receiver triangle facing the light, with its plane and edges ready for clipping.
+struct ReceiverTriangle {
+  std::uint32_t index = 0;          // into the object's mesh.triangles
+  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
+  glm::vec3 normal{0.0f};           // world, unit, on the light's side
+  float offset = 0.0f;              // dot(normal, p) of the plane's points
+  float light_height = 0.0f;        // the light's distance above the plane, metres (> 0)
+  std::array<glm::vec3, 3> inward;  // world, in the plane: into the triangle from edge i, i+1
+  std::array<float, 3> inward_offset{};
+  DirectionBox box;
+  bool beyond_beam = false;         // not wholly inside the light's inner beam: clip to it
+};
+
+struct Receiver {
+  std::size_t object = 0;
+  std::vector<ReceiverTriangle> triangles;
+  DirectionBox box = kEmptyBox;
+};
+
+Caster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &light,
+                      const glm::mat4 &light_view) {
+  const SceneObject &object = scene.objects[index];
+  const Mesh &mesh = object.shadow_mesh.triangles.empty() ? object.mesh : object.shadow_mesh;
+  const LitVertices lit = light_vertices(mesh, object.model_to_world, light_view);
+  Caster caster;
+  caster.object = index;
+  // A closed caster's light-facing triangles cover its whole shadow, so the others are culled
+  // (the article's "lightface-culled"). An open one (a tube, a sheet) may show the light only
+  // its back faces: those cast too, turned to face the light.
+  const bool closed = build_edge_mesh(mesh).closed;
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 &a = lit.world[t.x], &b = lit.world[t.y], &c = lit.world[t.z];
+    const bool facing = faces(light.position, a, b, c);
+    if (!facing && (closed || !faces(light.position, a, c, b))) continue;
+    // Wholly behind the light's view plane: its shadow goes away from every receiver in the cone.
+    if (!lit.in_front[t.x] && !lit.in_front[t.y] && !lit.in_front[t.z]) continue;
+    if (facing) {
+      caster.triangles.push_back({{a, b, c}, triangle_box(lit, t)});
+    } else {
+      caster.triangles.push_back({{a, c, b}, triangle_box(lit, t)});
+    }
+    caster.box.include(caster.triangles.back().box);
+  }
+  return caster;
+}
+
+Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam &beam,
+                          const SpotLight &light, const glm::mat4 &light_view) {
+  const SceneObject &object = scene.objects[index];
+  const LitVertices lit = light_vertices(object.mesh, object.model_to_world, light_view);
+  // Per vertex: inside the inner beam for sure, and which outer planes it lies beyond (a
+  // triangle wholly beyond one of them is out of the light's reach).
+  std::vector<bool> inside(lit.world.size());
+  std::vector<std::uint64_t> beyond(lit.world.size(), 0);
+  for (std::size_t i = 0; i < lit.world.size(); ++i) {
+    inside[i] = beam.surely_inside(lit.world[i]);
+    if (inside[i]) continue;
+    for (std::size_t p = 0; p < beam.outer.size() && p < 64; ++p) {
+      if (glm::dot(beam.outer[p], glm::vec4(lit.world[i], 1.0f)) < 0.0f) beyond[i] |= 1ull << p;
+    }
+  }
+  Receiver receiver;
+  receiver.object = index;
+  for (std::size_t k = 0; k < object.mesh.triangles.size(); ++k) {
+    const glm::uvec3 &t = object.mesh.triangles[k];
+    // The light does not shine on it anywhere: no shadow to cast on it.
+    if ((beyond[t.x] & beyond[t.y] & beyond[t.z]) != 0) continue;
+    ReceiverTriangle r;
+    r.beyond_beam = !(inside[t.x] && inside[t.y] && inside[t.z]);
+    r.index = static_cast<std::uint32_t>(k);
+    r.corner = {lit.world[t.x], lit.world[t.y], lit.world[t.z]};
+    const glm::vec3 cross = glm::cross(r.corner[1] - r.corner[0], r.corner[2] - r.corner[0]);
+    const float length = glm::length(cross);
+    if (!(length > 1e-12f)) continue;  // degenerate
+    r.normal = cross / length;
+    r.offset = glm::dot(r.normal, r.corner[0]);
+    r.light_height = glm::dot(r.normal, light.position) - r.offset;
+    if (r.light_height <= 0.0f) continue;  // facing away from the light
+    for (int e = 0; e < 3; ++e) {
+      const glm::vec3 &from = r.corner[static_cast<std::size_t>(e)];
+      const glm::vec3 &to = r.corner[static_cast<std::size_t>((e + 1) % 3)];
+      r.inward[static_cast<std::size_t>(e)] = glm::cross(r.normal, to - from);
+      r.inward_offset[static_cast<std::size_t>(e)] = glm::dot(r.inward[static_cast<std::size_t>(e)], from);
+    }
+    r.box = triangle_box(lit, t);
+    receiver.box.include(r.box);
+    receiver.triangles.push_back(r);
+  }
+  return receiver;
+}
+
+// A convex polygon during clipping: a triangle cut by five planes has at most eight corners, and
+// the beam region's planes (at most kConeSides and a gobo's two bars) add one each.
+struct SmallPolygon {
+  std::array<glm::vec3, 10 + kConeSides> v;
+  std::size_t n = 0;
+};
+
+// Sutherland-Hodgman against one plane: keeps the part where dot(normal, p) >= offset.
+void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, SmallPolygon &scratch) {
+  scratch.n = 0;
+  for (std::size_t i = 0; i < polygon.n; ++i) {
+    const glm::vec3 &a = polygon.v[i], &b = polygon.v[(i + 1) % polygon.n];
+    const float da = glm::dot(normal, a) - offset, db = glm::dot(normal, b) - offset;
+    if (da >= 0.0f) scratch.v[scratch.n++] = a;
+    if ((da >= 0.0f) != (db >= 0.0f)) {
+      // From the same end whichever way the edge is walked: neighbours sharing it meet exactly.
+      const bool forward = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+      scratch.v[scratch.n++] = forward ? a + (b - a) * (da / (da - db))
+                                       : b + (a - b) * (db / (db - da));
+    }
+  }
+  std::swap(polygon, scratch);
+}
+
+// Listing 1's lines 05-09 for one pair, in world space: the caster triangle clipped to the part
+// between the receiver's plane and the light's height above it, projected from the light onto
+// the plane, and clipped against the receiver's three edges within the plane.
+void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
+             const glm::vec3 &light, const std::array<float, 3> &height,
+             const std::vector<glm::vec4> &beam, SmallPolygon &polygon, SmallPolygon &scratch) {
+  const float top = receiver.light_height * kNearLightHeight;
+  polygon.n = 3;
+  std::copy(caster.corner.begin(), caster.corner.end(), polygon.v.begin());
+  if (std::min({height[0], height[1], height[2]}) < 0.0f) {
+    clip_keep(polygon, receiver.normal, receiver.offset, scratch);  // beyond the plane
+  }
+  if (std::max({height[0], height[1], height[2]}) > top) {
+    clip_keep(polygon, -receiver.normal, -(receiver.offset + top), scratch);
+  }
+  for (std::size_t i = 0; i < polygon.n; ++i) {
+    // Along the ray from the light: the plane is reached at light_height / (light_height - d).
+    const float d = glm::dot(receiver.normal, polygon.v[i]) - receiver.offset;
+    polygon.v[i] = light + (polygon.v[i] - light) *
+                               (receiver.light_height / (receiver.light_height - d));
+  }
+  for (std::size_t e = 0; e < 3 && polygon.n >= 3; ++e) {
+    clip_keep(polygon, receiver.inward[e], receiver.inward_offset[e], scratch);
+  }
+  // Only where the light shines (light_beam.h): the beam's inner planes, on the receiver.
+  if (!receiver.beyond_beam) return;
+  for (const glm::vec4 &plane : beam) {
+    if (polygon.n < 3) break;
+    clip_keep(polygon, glm::vec3(plane), -plane.w, scratch);
+  }
+}
+
+glm::mat4 light_view_matrix(const SpotLight &light) {
+  glm::vec3 axis = light.target - light.position;
+  axis = glm::length(axis) > 1e-6f ? glm::normalize(axis) : glm::vec3(0.0f, -1.0f, 0.0f);
+  const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+  return glm::lookAt(light.position, light.position + axis, up);
+}
+
+}  // namespace
+
+PlanarShadows project_and_clip_casters(const Scene &scene) {
+  PlanarShadows result;
+  result.lights.resize(scene.lights.size());
+  SmallPolygon polygon, scratch;
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const SpotLight &light = scene.lights[l];
+    if (light.is_projector()) continue;  // slides cast no shadows
+    const glm::mat4 light_view = light_view_matrix(light);
+    const LightBeam beam = light_beam(light);
+    std::vector<Caster> casters;
+    std::vector<Receiver> receivers;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      if (scene.objects[i].casts_shadow) casters.push_back(prepare_caster(scene, i, light, light_view));
+      if (scene.objects[i].receives_shadow) {
+        receivers.push_back(prepare_receiver(scene, i, beam, light, light_view));
+      }
+    }
+    ShadowPolygons &out = result.lights[l];
+    for (const Receiver &receiver : receivers) {
+      for (const Caster &caster : casters) {
+        if (caster.object == receiver.object || !caster.box.overlaps(receiver.box)) continue;
+        for (const ReceiverTriangle &r : receiver.triangles) {
+          if (!r.box.overlaps(caster.box)) continue;
+          const float top = r.light_height * kNearLightHeight;
+          for (const CasterTriangle &c : caster.triangles) {
+            if (!c.box.overlaps(r.box)) continue;
+            // Heights above the receiver's plane: nothing wholly beyond the plane (the receiver
+            // is then between it and the light) or wholly level with the light casts on it.
+            const std::array<float, 3> height = {glm::dot(r.normal, c.corner[0]) - r.offset,
+                                                 glm::dot(r.normal, c.corner[1]) - r.offset,
+                                                 glm::dot(r.normal, c.corner[2]) - r.offset};
+            if (std::max({height[0], height[1], height[2]}) <= 0.0f) continue;
+            if (std::min({height[0], height[1], height[2]}) >= top) continue;
+            if (result.pairs_clipped == kMaxClippedPairs) {
+              ++result.pairs_skipped;
+              continue;
+            }
+            ++result.pairs_clipped;
+            // Beyond the beam's sure inside: one polygon per lit region (light_beam.h).
+            const std::size_t pieces = r.beyond_beam ? beam.regions.size() : 1;
+            for (std::size_t piece = 0; piece < pieces; ++piece) {
+              cast_on(c, r, light.position, height, beam.regions[piece], polygon, scratch);
+              if (polygon.n < 3) continue;
+              out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
+                                      static_cast<std::uint32_t>(polygon.n),
+                                      static_cast<std::uint32_t>(receiver.object), r.index});
+              out.vertices.insert(out.vertices.end(), polygon.v.begin(),
+                                  polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+            }
+          }
+        }
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace gs

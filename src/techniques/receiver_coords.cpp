@@ -1,0 +1,182 @@
+// Step 3: the receivers' (s, t) from the light's view, and which receiver triangles can be in
+// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells). Spaces: world
+// and light view / light clip in; camera Glide screen vertices (pixels, y down) out, with (s, t)
+// in Glide texture units (0..256 across the shadow texture) as sow, tow over their divisor.
+#include "techniques/projected_shadow.h"
+
+#include "techniques/light_beam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace gs {
+namespace {
+
+// (s, t) numerators and divisor of a world point for step 5, in Glide texture units.
+glm::vec3 shadow_stq(const LightView &view, const glm::vec3 &world) {
+  const glm::vec4 clip = view.projection * view.view * glm::vec4(world, 1.0f);
+  return {(0.5f * clip.x + 0.5f * clip.w) * 256.0f, (0.5f * clip.w - 0.5f * clip.y) * 256.0f,
+          clip.w};
+}
+
+// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
+// the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
+// its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
+// beyond the caster's nearest point in that cell.
+bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  float farthest = 0.0f;
+  for (std::size_t i = 0; i < count; ++i) {
+    farthest = std::max(farthest, light_clip[i].w);
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+  const float cell = static_cast<float>(view.size) / LightView::kCells;
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
+  const int x1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
+  const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const auto index = static_cast<std::size_t>(y * LightView::kCells + x);
+      if (view.occupied[index] && farthest > view.nearest[index]) return true;
+    }
+  }
+  return false;
+}
+
+float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
+                   ShadowAlpha mode) {
+  float alpha = light.shadow_strength * 255.0f;
+  if (mode == ShadowAlpha::Distance) {
+    // Fainter the farther the receiver is behind the caster, as a wider penumbra would be.
+    const float distance = glm::length(world - view.position);
+    alpha *= std::clamp(view.caster_distance / std::max(distance, 1e-3f), 0.0f, 1.0f);
+  }
+  return alpha;
+}
+
+// Fills the texture fields of a camera-screen vertex for the world point it stands for.
+void set_texture_fields(GrVertex &v, const LightView &view, const SpotLight &light,
+                        const glm::vec3 &world, const ProjectedShadowOptions &options) {
+  const glm::vec3 stq = shadow_stq(view, world);
+  if (options.projective) {
+    // The hardware divides per pixel by tmuvtx[0].oow (GR_STWHINT_W_DIFF_TMU0).
+    v.tmuvtx[0].sow = stq.x * v.oow;
+    v.tmuvtx[0].tow = stq.y * v.oow;
+    v.tmuvtx[0].oow = stq.z * v.oow;
+  } else {
+    // Listing 3: (s, t) divided per vertex, interpolated with the camera's perspective only.
+    v.tmuvtx[0].sow = stq.x / stq.z * v.oow;
+    v.tmuvtx[0].tow = stq.y / stq.z * v.oow;
+  }
+  v.a = shadow_alpha(light, view, world, options.alpha);
+}
+
+}  // namespace
+
+ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
+                                       std::size_t caster, const SpotLight &light,
+                                       const LightView &view, const ProjectedShadowOptions &options) {
+  ReceiverCoords coords;
+  const glm::mat4 light_clip = view.projection * view.view;
+  // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
+  // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
+  std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
+  if (view.clip_to_view) {
+    // A tile's sides as light-view planes: a clip-space plane p is transpose(P) p in view space.
+    for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, 1), glm::vec4(1, 0, 0, 1),
+                                  glm::vec4(0, -1, 0, 1), glm::vec4(0, 1, 0, 1)}) {
+      view_planes.push_back(glm::transpose(view.projection) * side);
+    }
+  }
+  // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
+  const glm::mat4 world_from_view = glm::inverse(view.view);
+  std::vector<std::vector<glm::vec4>> beam_regions;
+  for (const std::vector<glm::vec4> &region : view.beam.regions) {
+    beam_regions.emplace_back();
+    for (const glm::vec4 &plane : region) {
+      beam_regions.back().push_back(glm::transpose(world_from_view) * plane);
+    }
+  }
+  const LightBeam &beam = view.beam;
+  std::vector<ClipVertex> polygon, scratch;
+  for (std::size_t r = 0; r < frame.objects.size(); ++r) {
+    const ProjectedObject &receiver = frame.objects[r];
+    if (r == caster || !receiver.object->receives_shadow) continue;
+    const std::size_t n = receiver.world.size();
+    std::vector<glm::vec4> lc(n);  // light clip
+    std::vector<unsigned> flags(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      lc[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
+      const glm::vec4 &p = lc[i];
+      flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
+                 (p.w < view.caster_front) << 4;
+      if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
+    }
+    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+      // Listing 2: skip triangles facing away from the light and those wholly outside its view.
+      if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
+      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
+      const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
+      const bool in_front = (any_outside & 0x10) != 0;
+      const bool beyond_beam = (any_outside & 0x20) != 0;
+      const bool needs_clip =
+          in_front || beyond_beam || (view.clip_to_view && (any_outside & 0xF) != 0);
+      if (!needs_clip) {
+        const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
+        if (!sees_caster(view, corners, 3)) continue;
+      }
+      const bool exact = !needs_clip &&
+                         (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
+      if (exact) {
+        ShadowTriangle triangle;
+        const unsigned index[3] = {t.x, t.y, t.z};
+        for (int k = 0; k < 3; ++k) {
+          triangle.v[k] = receiver.screen[index[k]];
+          set_texture_fields(triangle.v[k], view, light, receiver.world[index[k]], options);
+        }
+        coords.triangles.push_back(triangle);
+        continue;
+      }
+      polygon.clear();
+      for (unsigned i : {t.x, t.y, t.z}) {
+        polygon.push_back({view.view * glm::vec4(receiver.world[i], 1.0f), receiver.world[i], {}});
+      }
+      for (const glm::vec4 &plane : view_planes) {
+        clip_polygon(polygon, plane, scratch);
+        if (polygon.size() < 3) break;
+      }
+      if (polygon.size() < 3) continue;
+      // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
+      const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
+      for (std::size_t piece = 0; piece < pieces; ++piece) {
+        std::vector<ClipVertex> part = polygon;
+        if (beyond_beam) {
+          for (const glm::vec4 &plane : beam_regions[piece]) {
+            if (part.size() < 3) break;
+            clip_polygon(part, plane, scratch);
+          }
+        }
+        if (part.size() < 3) continue;
+        std::vector<glm::vec4> corners;
+        for (const ClipVertex &v : part) corners.push_back(view.projection * v.clip);
+        if (!sees_caster(view, corners.data(), corners.size())) continue;
+        std::vector<GrVertex> screen;
+        project_camera_polygon(frame, scene, part, scratch, screen);
+        for (std::size_t i = 0; i < screen.size(); ++i) {
+          set_texture_fields(screen[i], view, light, part[i].world, options);
+        }
+        if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
+      }
+    }
+  }
+  return coords;
+}
+
+}  // namespace gs

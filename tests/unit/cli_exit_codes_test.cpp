@@ -1,0 +1,83 @@
+// The command line's exit status (docs/cli.md): 0 for success and --help, 1 for bad input or a
+// run that failed (a scene file that is missing or broken, a frame missing shadows its technique
+// could not cast), 2 for a command line the tool refuses (CLI11's own codes, 105 and 106, never
+// reach the shell).
+#include "tool_run.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#ifndef GLIDESHADOWS_PATH
+#error "GLIDESHADOWS_PATH must name the glideshadows executable"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+
+ToolRun run_tool(const std::string &arguments) { return ::run_tool(GLIDESHADOWS_PATH, arguments); }
+
+std::string scratch(const std::string &name) {
+  const fs::path path = fs::path(::testing::TempDir()) / ("cli_exit_" + name);
+  fs::remove_all(path);
+  fs::create_directories(path);
+  return path.string();
+}
+
+const std::string kHardCases = GLIDESHADOWS_HARD_CASES_DIR;
+
+TEST(CommandLineExitCodes, HelpIsASuccess) {
+  EXPECT_EQ(run_tool("--help").exit_code, 0);
+  EXPECT_EQ(run_tool("render --help").exit_code, 0);
+}
+
+TEST(CommandLineExitCodes, UsageErrorsExitTwo) {
+  const std::string out = scratch("usage");
+  for (const std::string &arguments :
+       {std::string(""), std::string("no-such-command"), std::string("render"),
+        "render " + kHardCases + "/box_over_floor.json --technique no-such-technique",
+        "render " + kHardCases + "/box_over_floor.json --shadow-size 100",
+        "render " + kHardCases + "/box_over_floor.json --no-such-option",
+        std::string("truth --mask ") + out + "/m.png", "demo --frames 0 --out " + out,
+        "demo --shadow-size 4096 --out " + out}) {
+    const ToolRun run = run_tool(arguments);
+    EXPECT_EQ(run.exit_code, 2) << "'" << arguments << "': " << run.output;
+  }
+}
+
+TEST(CommandLineExitCodes, MissingOrBrokenInputExitsOne) {
+  const std::string out = scratch("input");
+  const std::string missing = out + "/missing.json";
+  for (const std::string &arguments :
+       {"render " + missing + " --out " + out + "/r.png", "truth " + missing + " --mask " + out + "/m.png",
+        "bench " + missing, "compare " + out + "/a.png " + out + "/b.png"}) {
+    const ToolRun run = run_tool(arguments);
+    EXPECT_EQ(run.exit_code, 1) << "'" << arguments << "': " << run.output;
+  }
+  const ToolRun run = run_tool("render " + missing + " --out " + out + "/r.png");
+  EXPECT_NE(run.output.find(missing + ": cannot open"), std::string::npos) << run.output;
+  std::ofstream(out + "/broken.json") << "{\"objects\": [";
+  EXPECT_EQ(run_tool("render " + out + "/broken.json --out " + out + "/r.png").exit_code, 1);
+}
+
+// A frame the technique cannot shadow fully is an error unless the user allows missing shadows.
+TEST(CommandLineExitCodes, RenderMissingAShadowExitsOneUnlessAllowed) {
+  const std::string out = scratch("missing_shadow");
+  const std::string scene = kHardCases + "/light_inside_tube.json";
+  const ToolRun refused = run_tool("render " + scene + " --out " + out + "/r.png");
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("error: light 0 and 'tube'"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("--allow-missing-shadows"), std::string::npos) << refused.output;
+  const ToolRun allowed =
+      run_tool("render " + scene + " --allow-missing-shadows --out " + out + "/r.png");
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.output;
+  EXPECT_NE(allowed.output.find("warning: light 0 and 'tube'"), std::string::npos)
+      << allowed.output;
+  const ToolRun planar = run_tool("render " + scene + " --technique planar --out " + out + "/r.png");
+  EXPECT_EQ(planar.exit_code, 0) << planar.output;
+}
+
+}  // namespace
