@@ -7,8 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 
-#include <cstdlib>
-
 namespace glide_shim {
 
 GlideContext::GlideContext() = default;
