@@ -2,7 +2,8 @@
 // textures. Same run, same frames: the frame without shadows, with them through the LFB path and
 // through the direct (render-to-texture) path; the five step times; frames per second without
 // PNG writing; peak memory. Medians of repeats after a warm-up (llvmpipe compiles each new state
-// on its first draw).
+// on its first draw). `--only none|lfb|direct --frames N` draws N frames of one mode untimed, for
+// callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces the shim's fast paths off.
 #include "scene/fight_scene.h"
 #include "techniques/projected_shadow.h"
 
@@ -29,24 +30,78 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// --fidelity: frame 10 of the fight with projected shadows (LFB path), rendered in a window of
+// its own with the fidelity knobs `knobs` (GLIDESHIM_PLAIN_GL; null: none), as 565 words.
+std::vector<FxU16> fight_frame(const char *knobs) {
+  if (knobs != nullptr) setenv("GLIDESHIM_PLAIN_GL", knobs, 1); else unsetenv("GLIDESHIM_PLAIN_GL");
+  grGlideInit();
+  std::vector<FxU16> words(640 * 480);
+  if (grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                   GR_ORIGIN_UPPER_LEFT, 2, 1)) {
+    gs::FightScene fight(640, 480, 256);
+    gs::render_projected_shadows(fight.at(10.0f / 30.0f), gs::ProjectedShadowOptions{}, false);
+    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, 640, 480, 640 * 2, words.data());
+  }
+  grGlideShutdown();
+  unsetenv("GLIDESHIM_PLAIN_GL");
+  return words;
+}
+
+int run_fidelity() {
+  std::printf("demo_bench --fidelity: frame 10 with projected shadows, each modelled behaviour\n"
+              "switched to plain GL (GLIDESHIM_PLAIN_GL), error in 565 LSBs against the exact frame\n");
+  const std::vector<FxU16> exact = fight_frame(nullptr);
+  for (const char *knob : {"write", "iterators", "combine", "bilinear", "all"}) {
+    const std::vector<FxU16> plain = fight_frame(knob);
+    int max_lsb = 0;
+    double sum = 0;
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+      const int d[3] = {std::abs((plain[i] >> 11) - (exact[i] >> 11)),
+                        std::abs(((plain[i] >> 5) & 0x3F) - ((exact[i] >> 5) & 0x3F)),
+                        std::abs((plain[i] & 0x1F) - (exact[i] & 0x1F))};
+      for (int c : d) max_lsb = std::max(max_lsb, c), sum += c;
+      changed += plain[i] != exact[i];
+    }
+    std::printf("  %-10s max %d LSB  mean %.4f LSB  pixels changed %6.2f%%\n", knob, max_lsb,
+                sum / (3.0 * static_cast<double>(exact.size())),
+                100.0 * static_cast<double>(changed) / static_cast<double>(exact.size()));
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
   int frames = 40;
+  int only = -1;  // --only: one mode, untimed
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--help") == 0) {
-      std::printf("usage: demo_bench [--frames N]\nTimes N frames of the fighter demo at 640x480, "
-                  "256x256 shadows: without shadows, LFB path, direct path (median ms per frame),\n"
-                  "the five steps, frames per second and peak memory.\n");
+      std::printf("usage: demo_bench [--frames N] [--only none|lfb|direct] [--fidelity]\nTimes N frames of the "
+                  "fighter demo at 640x480, 256x256 shadows: without shadows, LFB path, direct\n"
+                  "path (median ms per frame), the five steps, frames per second and peak memory.\n"
+                  "--only draws N frames of one mode untimed (for callgrind, LP_NUM_THREADS=0).\n"
+                  "--fidelity prints each GLIDESHIM_PLAIN_GL knob's error on one shadowed frame.\n"
+                  "GLIDESHIM_EXACT=1 forces the shim's fast paths off.\n");
       return 0;
     }
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
-      frames = std::max(4, std::atoi(argv[++i]));
+      frames = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--fidelity") == 0) {
+      return run_fidelity();
+    } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+      const std::string mode = argv[++i];
+      only = mode == "none" ? 0 : mode == "lfb" ? 1 : mode == "direct" ? 2 : -2;
+      if (only == -2) {
+        std::fprintf(stderr, "demo_bench: unknown mode '%s' (see --help)\n", mode.c_str());
+        return 2;
+      }
     } else {
       std::fprintf(stderr, "demo_bench: unknown argument '%s' (see --help)\n", argv[i]);
       return 2;
     }
   }
+  if (only < 0) frames = std::max(4, frames);  // a median of at least four
   grGlideInit();
   if (!grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
                     GR_ORIGIN_UPPER_LEFT, 2, 1)) {
@@ -58,6 +113,17 @@ int main(int argc, char **argv) {
   direct.direct_path = true;
 
   enum Mode { kNone, kLfb, kDirect };
+  if (only >= 0) {  // one mode, untimed, for a profiler
+    for (int i = 0; i < frames; ++i) {
+      const gs::Scene &scene = fight.at(static_cast<float>(i) / 30.0f);
+      if (only == kNone) gs::render_scene(scene, gs::project_scene(scene));
+      else gs::render_projected_shadows(scene, only == kLfb ? lfb : direct, false);
+      grSstIdle();
+      grBufferSwap(0);
+    }
+    grGlideShutdown();
+    return 0;
+  }
   const char *names[3] = {"no shadows", "shadows, LFB path", "shadows, direct path"};
   std::vector<double> frame_ms[3];
   std::vector<gs::StepTimes> steps;

@@ -2,8 +2,10 @@
 #include "context.h"
 
 #include "gl/gl_renderer.h"
+#include "gl/shader_source.h"
 
 #include <cstdlib>
+#include <cstring>
 
 namespace glide_shim {
 
@@ -73,6 +75,15 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
   perf = PerfStatsState{};
   texture_target = TextureTarget{};
   plain_gl = false;
+  const char *exact = std::getenv("GLIDESHIM_EXACT");
+  fast_paths = !(exact != nullptr && std::strcmp(exact, "1") == 0);
+  std::string unknown_knobs;
+  fidelity_knobs = parse_fidelity_knobs(std::getenv("GLIDESHIM_PLAIN_GL"), unknown_knobs);
+  if (!unknown_knobs.empty()) {
+    report(GLIDESHIM_ERR_INVALID_VALUE,
+           "grSstWinOpen: GLIDESHIM_PLAIN_GL names no fidelity knob " + unknown_knobs +
+               " (known: write, iterators, combine, bilinear, all); the others apply");
+  }
 }
 
 void GlideContext::flush() {

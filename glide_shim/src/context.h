@@ -242,6 +242,12 @@ class GlideContext {
   // survives grSstWinOpen; only guMPInit resets it.
   GrMPState multipass{{GR_NULL_MIPMAP_HANDLE, GR_NULL_MIPMAP_HANDLE}, GR_MPTEXTURECOMBINE_ADD};
   bool plain_gl = false;  // between glideShimBeginGL and glideShimEndGL
+  // The fast paths: work the frame cannot show is skipped, with the exact path's bytes (see
+  // docs/environment.md). GLIDESHIM_EXACT=1 turns them off at grSstWinOpen; tests flip it.
+  bool fast_paths = true;
+  // Fidelity knobs (GLIDESHIM_PLAIN_GL, read at grSstWinOpen; kPlain* in gl/shader_source.h):
+  // modelled behaviours replaced by plain GL's. Off (0) by default; the frame is then exact.
+  int fidelity_knobs = 0;
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;
 

@@ -142,7 +142,13 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
   const GlFunctions &gl = backend_->gl;
   std::string error;
   const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(), error);
-  const unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(key), error) : 0;
+  unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(key), error) : 0;
+  if (vs != 0 && fs == 0 && key.fast) {
+    // A context without GLSL 1.30 gets the exact program under the fast key: the same bytes.
+    PipelineKey exact = key.without_sources();
+    exact.fast = exact.texel_fetch = false;
+    fs = compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(exact), error);
+  }
   if (fs == 0) {
     if (vs) gl.glDeleteShader(vs);
     context_.report(GLIDESHIM_ERR_BACKEND, error);
@@ -338,7 +344,10 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
 void GlRenderer::flush() {
   if (queue_.empty()) return;
   const GlFunctions &gl = backend_->gl;
-  const PipelineKey key = pipeline_key(context_);
+  PipelineKey key = pipeline_key(context_, context_.fast_paths);
+  if (key.sources && programs_.count(key.defines()) == 0 && ++states_seen_[key.defines()] < 2) {
+    key = key.without_sources();  // compiled in once the state is drawn again
+  }
   const ShaderProgram *program = program_for(key);
   if (program == nullptr) {
     queue_.clear();
@@ -547,6 +556,7 @@ void GlRenderer::draw_counting_stages(const ShaderProgram *program, const Pipeli
 
 void GlRenderer::begin_plain_gl() {
   flush();
+  stencil_untouched_ = false;  // plain GL code may keep values in the stencil buffer
   const GlFunctions &gl = backend_->gl;
   gl.glPushAttrib(GL_ALL_ATTRIB_BITS);
   gl.glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
@@ -623,6 +633,17 @@ void GlRenderer::clear(std::uint16_t rgb565, bool color, double gl_depth, bool d
     gl.glDepthMask(GL_TRUE);
     gl.glClearDepth(gl_depth);
     mask |= GL_DEPTH_BUFFER_BIT;
+    // Fast path: depth and stencil share 32-bit words, and llvmpipe clears depth alone by a
+    // read-modify-write of every word (six times the work of the fill that clears both). The
+    // shim's own stencil use (COMPARE_TO_BIAS) returns every bit it sets to 0, so until plain GL
+    // code has had the frame buffer the stencil holds zeros (or what GL left undefined), and
+    // clearing it to 0 as well changes nothing anyone can read.
+    const bool texture_target = target_.framebuffer != framebuffer_;
+    if (context_.fast_paths && (texture_target || stencil_untouched_)) {
+      gl.glStencilMask(0xFF);
+      gl.glClearStencil(0);
+      mask |= GL_STENCIL_BUFFER_BIT;
+    }
   }
   if (mask != 0) gl.glClear(mask);
 }

@@ -110,6 +110,7 @@ class GlRenderer {
   Primitive primitive_ = Primitive::Triangles;
   std::vector<ShimVertex> queue_;
   std::map<std::string, ShaderProgram> programs_;
+  std::map<std::string, int> states_seen_;  // fast keys drawn so far without their program
   TextureCache textures_;
   bool counting_ = false;
   unsigned drawing_program_ = 0;  // the program use_program bound last
@@ -122,6 +123,9 @@ class GlRenderer {
   unsigned query_ = 0;
   std::uint32_t pixels_counted_ = 0;
   bool disjoint_ = false;  // flush_disjoint is drawing
+  // No plain GL code (glideShimBeginGL) has drawn into the frame buffer yet, so its stencil
+  // holds nothing but zeros (see clear()).
+  bool stencil_untouched_ = true;
 };
 
 }  // namespace glide_shim

@@ -3,6 +3,7 @@
 // invert flag are 0/1 uniforms. Also generated: the TMU fetch, chroma key, alpha test, 565 write.
 #include "gl/shader_source.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace glide_shim {
@@ -48,11 +49,12 @@ std::string factor_code(GrCombineFactor_t factor, bool rgb, bool fbi, const std:
 }
 
 // One combine unit, straight-line: clamp(((other or 0) - (local or 0)) * (f + 1) >> 8 + add),
-// then inverted when the `invert` uniform expression is 1.
+// then inverted when the `invert` uniform expression is 1. The fast paths compile the invert in:
+// `invert` is then "" (none) or "!" (always).
 std::string combine_code(const std::string &result, const UnitShape &unit, bool rgb, bool fbi,
                          const std::string &local, const std::string &other,
                          const std::string &local_alpha, const std::string &other_alpha,
-                         const std::string &invert) {
+                         const std::string &invert, bool plain = false) {
   const std::string type = rgb ? "vec3" : "float";
   const std::string zero = type + "(0.0)";
   const std::string widened_local_alpha = rgb ? "vec3(" + local_alpha + ")" : local_alpha;
@@ -76,14 +78,23 @@ std::string combine_code(const std::string &result, const UnitShape &unit, bool 
   }
   std::ostringstream s;
   s << "  " << type << " " << result << " = ";
-  if (has_product(unit.function)) {
+  if (has_product(unit.function) && plain) {
+    // Fidelity knob `combine`: GL_MODULATE's product, x * f / 255 unrounded.
+    s << "clamp((" << minuend << " - " << subtrahend << ") * "
+      << factor_code(unit.factor, rgb, fbi, local, local_alpha, other_alpha) << " / 255.0 + "
+      << add << ", 0.0, 255.0);\n";
+  } else if (has_product(unit.function)) {
     s << "clamp(floor((" << minuend << " - " << subtrahend << ") * ("
       << factor_code(unit.factor, rgb, fbi, local, local_alpha, other_alpha)
       << " + 1.0) / 256.0) + " << add << ", 0.0, 255.0);\n";
   } else {
     s << add << ";\n";
   }
-  s << "  " << result << " = mix(" << result << ", 255.0 - " << result << ", " << invert << ");\n";
+  if (invert == "!") {
+    s << "  " << result << " = 255.0 - " << result << ";\n";
+  } else if (!invert.empty()) {
+    s << "  " << result << " = mix(" << result << ", 255.0 - " << result << ", " << invert << ");\n";
+  }
   return s.str();
 }
 
@@ -157,9 +168,22 @@ std::string dither_entry_code(const std::string &name) {
 }
 
 // One filter at the chosen level: point (the texel under s,t) or Voodoo 1 bilinear.
-std::string filter_code(bool bilinear, const char *address_s, const char *address_t) {
+std::string filter_code(bool bilinear, const char *address_s, const char *address_t,
+                        bool plain) {
   std::ostringstream s;
-  if (bilinear) {
+  if (bilinear && plain) {
+    // Fidelity knob `bilinear`: GL_LINEAR's weights (the whole fraction) and no rounding.
+    s << "    vec2 uvb = uv - 0.5;\n"
+         "    vec2 base = floor(uvb);\n"
+         "    vec2 f = (uvb - base) * 16.0;\n"
+      << "    float i0 = " << address_s << "(base.x, level.y), i1 = " << address_s
+      << "(base.x + 1.0, level.y);\n"
+      << "    float j0 = " << address_t << "(base.y, level.z), j1 = " << address_t
+      << "(base.y + 1.0, level.z);\n"
+         "    return (fetch(i0, j0, level) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0,"
+         " level) * f.x * (16.0 - f.y) + fetch(i0, j1, level) * (16.0 - f.x) * f.y +"
+         " fetch(i1, j1, level) * f.x * f.y) * (255.0 / 256.0);\n";
+  } else if (bilinear) {
     s << "    vec2 uvb = uv - 0.5;\n"
          "    vec2 base = floor(uvb);\n"
          "    vec2 f = floor((uvb - base) * 16.0);  // Voodoo 1: 4-bit sub-texel fraction\n"
@@ -188,6 +212,7 @@ std::string filter_code(bool bilinear, const char *address_s, const char *addres
 // (the next one if the evenOdd mask left it out). Without mip-mapping lodmin == lodmax, so the
 // LOD, the level and its scale are the same for every pixel and come in as uniforms.
 std::string tmu_sample_code(const PipelineKey &key) {
+  const bool plain_bilinear = (key.plain & kPlainBilinear) != 0;
   const char *address_s = key.wrap_s ? "wrap_index" : "clamp_index";
   const char *address_t = key.wrap_t ? "wrap_index" : "clamp_index";
   std::ostringstream s;
@@ -213,11 +238,11 @@ std::string tmu_sample_code(const PipelineKey &key) {
          "  vec2 uv = st * u_level_scale;  // texel units of the level\n";
   }
   if (key.mag_bilinear == key.min_bilinear) {
-    s << "  {\n" << filter_code(key.mag_bilinear, address_s, address_t) << "  }\n";
+    s << "  {\n" << filter_code(key.mag_bilinear, address_s, address_t, plain_bilinear) << "  }\n";
   } else {
     s << "  if (lod <= u_lod_range.x) {  // magnification\n"
-      << filter_code(key.mag_bilinear, address_s, address_t) << "  } else {\n"
-      << filter_code(key.min_bilinear, address_s, address_t) << "  }\n";
+      << filter_code(key.mag_bilinear, address_s, address_t, plain_bilinear) << "  } else {\n"
+      << filter_code(key.min_bilinear, address_s, address_t, plain_bilinear) << "  }\n";
   }
   s << "}\n";
   return s.str();
@@ -271,15 +296,86 @@ uniform float u_fog_bias;   // depth bias added to the W code (depth buffering o
 // A texel as GL returns it, k/255 for the TMU's widened 8-bit value k (the upload already
 // holds the bit-replicated values); i, j are texel indices in `level`, already clamped or
 // wrapped, and the level's rows start at level.x in the atlas.
-vec4 fetch(float i, float j, vec4 level) {
-  return texture2D(u_texture, (vec2(i, j + level.x) + 0.5) / u_tex_size);
-}
 float clamp_index(float i, float size) { return clamp(i, 0.0, size - 1.0); }
 float wrap_index(float i, float size) { return mod(i, size); }
 
 )";
 
+// The texel fetch (see the prelude). texelFetch reads the same texel as the GL_NEAREST lookup
+// at its centre, without the coordinate arithmetic.
+std::string fetch_code(bool texel_fetch) {
+  if (texel_fetch) {
+    return "vec4 fetch(float i, float j, vec4 level) {\n"
+           "  return texelFetch(u_texture, ivec2(int(i), int(j + level.x)), 0);\n"
+           "}\n";
+  }
+  return "vec4 fetch(float i, float j, vec4 level) {\n"
+         "  return texture2D(u_texture, (vec2(i, j + level.x) + 0.5) / u_tex_size);\n"
+         "}\n";
+}
+
+// The fast paths' 565 write with the hardware's dither, in integers (GLSL 1.30). The matrix
+// entry d from the pixel's column x and its row from the top y, low two bits only: y is
+// height - 1 - row from the bottom, and (height - 1 - r) & 3 = (~r + (height & 3)) & 3, with
+// height & 3 compiled in. The 4x4 matrix is the bit interleave 8 (x0 ^ y0) + 4 y0 + 2 (x1 ^ y1)
+// + y1, the 2x2 one 2 + 8 (x0 ^ y0) + 4 y0: dither_entry_code's table without the selects. Then
+// (c << 1) - (c >> 4) + (c >> 7) + d) >> 4 per channel (<< 2 and >> 6 for green), the exact
+// path's floors on the integers 0..255 that rgb holds.
+std::string fast_dither_code(GrDitherMode_t dither, int rows_mod4) {
+  std::string s =
+      "  ivec2 dither_p = ivec2(gl_FragCoord.xy);\n"
+      "  int dither_y = ~dither_p.y";
+  if (rows_mod4 != 0) s += " + " + std::to_string(rows_mod4);
+  s += ";\n  int dither_a = dither_p.x ^ dither_y;\n";
+  if (dither == GR_DITHER_2x2) {
+    s += "  int d = 2 | ((dither_a & 1) << 3) | ((dither_y & 1) << 2);\n";
+  } else {
+    s += "  int d = ((dither_a & 1) << 3) | ((dither_y & 1) << 2) | (dither_a & 2) |"
+         " ((dither_y >> 1) & 1);\n";
+  }
+  s += "  ivec3 c = ivec3(rgb);\n"
+       "  vec3 q = vec3(((c << ivec3(1, 2, 1)) - (c >> 4) + (c >> ivec3(7, 6, 7)) + d) >> 4);\n";
+  return s;
+}
+
+// The fast paths' compiled-in source of a combine unit's local and other (as unit_uniforms).
+const char *fast_local(int local, bool rgb) {
+  if (rgb) return local == 1 ? "u_constant.rgb" : "it.rgb";
+  return local == 1 ? "u_constant.a" : "it.a";
+}
+const char *fast_other(int other, bool rgb) {
+  if (rgb) return other == 1 ? "tex.rgb" : other == 2 ? "u_constant.rgb" : "it.rgb";
+  return other == 1 ? "tex.a" : other == 2 ? "u_constant.a" : "it.a";
+}
+
+int other_index(GrCombineOther_t other) {  // as unit_uniforms: iterated 0, texture 1, constant 2
+  return other == GR_COMBINE_OTHER_TEXTURE ? 1 : other == GR_COMBINE_OTHER_CONSTANT ? 2 : 0;
+}
+
 }  // namespace
+
+int parse_fidelity_knobs(const char *list, std::string &unknown) {
+  unknown.clear();
+  if (list == nullptr) return 0;
+  const std::string text = list;
+  int knobs = 0;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string name = text.substr(start, end - start);
+    if (name == "write") knobs |= kPlainWrite;
+    if (name == "iterators") knobs |= kPlainIterators;
+    if (name == "combine") knobs |= kPlainCombine;
+    if (name == "bilinear") knobs |= kPlainBilinear;
+    if (name == "all") knobs |= kPlainWrite | kPlainIterators | kPlainCombine | kPlainBilinear;
+    if (!name.empty() && name != "write" && name != "iterators" && name != "combine" && name != "bilinear" &&
+        name != "all") {
+      unknown += (unknown.empty() ? "'" : ", '") + name + "'";
+    }
+    start = end + 1;
+  }
+  return knobs;
+}
 
 UnitUniforms unit_uniforms(const CombineUnit &unit) {
   UnitUniforms u;
@@ -298,7 +394,7 @@ bool reads_texture(const ColorPathState &path) {
          factor_reads_texture(path.alpha.factor);
 }
 
-PipelineKey pipeline_key(const GlideContext &context) {
+PipelineKey pipeline_key(const GlideContext &context, bool fast) {
   PipelineKey key;
   const ColorPathState &path = context.color_path;
   key.color = shape(path.color.function, path.color.factor);
@@ -325,6 +421,32 @@ PipelineKey pipeline_key(const GlideContext &context) {
   key.blending = !(context.blend.rgb_src == GR_BLEND_ONE && context.blend.rgb_dst == GR_BLEND_ZERO);
   key.dither = context.raster.dither;
   key.fog = context.fog.mode & 0xFF;
+  key.plain = context.fidelity_knobs;
+  if (fast) {
+    key.fast = key.sources = true;
+    key.texel_fetch = key.texture && context.tmu.source.valid;
+    const int height = context.texture_target.active ? context.texture_target.side
+                                                     : context.display.height;
+    key.rows_mod4 = key.dither != GR_DITHER_DISABLE ? height & 3 : 0;
+    key.color_local = path.color.local == GR_COMBINE_LOCAL_CONSTANT ? 1 : 0;
+    key.color_other = other_index(path.color.other);
+    key.color_invert = path.color.invert;
+    key.alpha_local = path.alpha.local == GR_COMBINE_LOCAL_CONSTANT ? 1 : 0;
+    key.alpha_other = other_index(path.alpha.other);
+    key.alpha_invert = path.alpha.invert;
+    if (key.texture) {
+      key.tmu_rgb_invert = context.tmu.combine.rgb_invert;
+      key.tmu_alpha_invert = context.tmu.combine.alpha_invert;
+    }
+  }
+  return key;
+}
+
+PipelineKey PipelineKey::without_sources() const {
+  PipelineKey key = *this;
+  key.sources = false;
+  key.color_local = key.color_other = key.alpha_local = key.alpha_other = 0;
+  key.color_invert = key.alpha_invert = key.tmu_rgb_invert = key.tmu_alpha_invert = false;
   return key;
 }
 
@@ -337,6 +459,12 @@ std::string PipelineKey::defines() const {
     << lod_dither << " wrap " << wrap_s << wrap_t
     << " itrgb " << alpha_controls_itrgb << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither << " fog " << fog;
+  if (plain != 0) s << " plain " << plain;
+  if (fast) s << " fast " << texel_fetch << rows_mod4;
+  if (sources) {
+    s << " sources " << color_local << color_other << color_invert
+      << alpha_local << alpha_other << alpha_invert << tmu_rgb_invert << tmu_alpha_invert;
+  }
   return s.str();
 }
 
@@ -365,43 +493,62 @@ void main() {
 
 std::string fragment_shader_source(const PipelineKey &key) {
   std::ostringstream s;
-  s << "#version 120\n// " << key.defines() << '\n' << kFragmentPrelude;
+  s << (key.fast ? "#version 130\n// " : "#version 120\n// ") << key.defines() << '\n'
+    << kFragmentPrelude << fetch_code(key.texel_fetch);
 
   if (key.texture) s << tmu_sample_code(key);
+  const bool plain_combine = (key.plain & kPlainCombine) != 0;
 
   if (key.fog == GR_FOG_WITH_TABLE) s << kFogTableFunctions;
 
   s << "void main() {\n"
-       "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
+       << ((key.plain & kPlainIterators) != 0
+               ? "  vec4 it = v_color;  // fidelity knob `iterators`: GL's interpolation\n"
+               : "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n");
   if (key.texture) {
     s << "  float tex_lod;\n"
          "  vec4 texel = sample_tmu(tex_lod);\n"
       << lod_factor_code(key)
       << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
-                      "0.0", "u_tmu_invert.x")
+                      "0.0", !key.sources ? "u_tmu_invert.x" : key.tmu_rgb_invert ? "!" : "", plain_combine)
       << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",
-                      "u_tmu_invert.y")
+                      !key.sources ? "u_tmu_invert.y" : key.tmu_alpha_invert ? "!" : "", plain_combine)
       << "  vec4 tex = vec4(tmu_rgb, tmu_a);\n";
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
   }
   if (key.alpha_controls_itrgb) {  // grAlphaControlsITRGBLighting: texture alpha bit 7
     s << "  vec3 c_local = tex.a >= 128.0 ? u_constant.rgb : it.rgb;\n";
+  } else if (key.sources) {
+    s << "  vec3 c_local = " << fast_local(key.color_local, true) << ";\n";
   } else {
     s << "  vec3 c_local = mix(it.rgb, u_constant.rgb, u_color_select.x);\n";
   }
-  s << "  vec3 c_other = u_color_other.x * it.rgb + u_color_other.y * tex.rgb +"
-       " u_color_other.z * u_constant.rgb;\n"
-       "  float a_local = mix(it.a, u_constant.a, u_alpha_select.x);\n"
-       "  float a_other = u_alpha_other.x * it.a + u_alpha_other.y * tex.a +"
-       " u_alpha_other.z * u_constant.a;\n";
+  if (key.sources) {
+    s << "  vec3 c_other = " << fast_other(key.color_other, true) << ";\n"
+      << "  float a_local = " << fast_local(key.alpha_local, false) << ";\n"
+      << "  float a_other = " << fast_other(key.alpha_other, false) << ";\n";
+  } else {
+    s << "  vec3 c_other = u_color_other.x * it.rgb + u_color_other.y * tex.rgb +"
+         " u_color_other.z * u_constant.rgb;\n"
+         "  float a_local = mix(it.a, u_constant.a, u_alpha_select.x);\n"
+         "  float a_other = u_alpha_other.x * it.a + u_alpha_other.y * tex.a +"
+         " u_alpha_other.z * u_constant.a;\n";
+  }
   if (key.chroma_key) {
     s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on 'other'\n";
   }
   s << combine_code("rgb", key.color, true, true, "c_local", "c_other", "a_local", "a_other",
-                    "u_color_select.y")
-    << combine_code("alpha", key.alpha, false, true, "a_local", "a_other", "a_local", "a_other",
-                    "u_alpha_select.y");
+                    !key.sources ? "u_color_select.y" : key.color_invert ? "!" : "", plain_combine);
+  // The alpha combine's result reaches the pixel only through the alpha test and blending: a
+  // 565 buffer has no alpha planes. The fast paths leave it out when neither is on.
+  const bool alpha_seen = !key.fast || key.blending || key.alpha_test != GR_CMP_ALWAYS;
+  if (alpha_seen) {
+    s << combine_code("alpha", key.alpha, false, true, "a_local", "a_other", "a_local", "a_other",
+                      !key.sources ? "u_alpha_select.y" : key.alpha_invert ? "!" : "", plain_combine);
+  } else {
+    s << "  float alpha = 255.0;  // not observable: no alpha test, no blending\n";
+  }
 
   if (key.alpha_test == GR_CMP_NEVER) {
     s << "  discard;\n";
@@ -411,12 +558,15 @@ std::string fragment_shader_source(const PipelineKey &key) {
 
   s << fog_code(key.fog);
 
-  if (key.blending) {
+  if (key.blending || (key.plain & kPlainWrite) != 0) {
     // GL blends the 8-bit colour; its rounding may differ from the Voodoo's by one 565 step.
+    // (Fidelity knob `write`: GL's rounding to 565 instead of the truncation or dither.)
     s << "  gl_FragColor = vec4(rgb, alpha) / 255.0;\n";
   } else {
     if (key.dither == GR_DITHER_DISABLE) {
       s << "  vec3 q = floor(rgb / vec3(8.0, 4.0, 8.0));  // dither off: plain truncation\n";
+    } else if (key.fast) {
+      s << fast_dither_code(key.dither, key.rows_mod4);
     } else {
       // The hardware's dither: matrix entry d by frame-buffer row (from the top) and column.
       s << "  vec2 cell = mod(vec2(floor(gl_FragCoord.x), u_screen_height - 1.0 -"

@@ -15,6 +15,17 @@ struct UnitShape {
   GrCombineFactor_t factor = GR_COMBINE_FACTOR_ZERO;  // zero when the function has no product
 };
 
+// The fidelity knobs (docs/environment.md, GLIDESHIM_PLAIN_GL): each replaces one modelled
+// Voodoo behaviour by plain GL's, so the frame is no longer exact.
+constexpr int kPlainWrite = 1;      // "write": GL's rounding to 565, no truncation or dither
+constexpr int kPlainIterators = 2;  // "iterators": GL's interpolated colour, not truncated
+constexpr int kPlainCombine = 4;    // "combine": x * f / 255 (GL_MODULATE), not (f + 1) >> 8
+constexpr int kPlainBilinear = 8;   // "bilinear": GL_LINEAR's weights, not 4-bit ones
+// The knobs named in a comma-separated list ("write,combine"; "all"); unknown names are ignored.
+// The kPlain* bits of a GLIDESHIM_PLAIN_GL list (nullptr: none). Names it does not know are
+// left out and listed in `unknown` (comma-separated, empty when every name was known).
+int parse_fidelity_knobs(const char *list, std::string &unknown);
+
 // Everything about the state that changes the shader's code. llvmpipe compiles each new
 // program for tens of milliseconds, so sources, invert flags and every value (colours,
 // references, texture size) are uniforms; the function and factor of each unit are compiled in,
@@ -36,10 +47,34 @@ struct PipelineKey {
   GrDitherMode_t dither = GR_DITHER_DISABLE;
   GrFogMode_t fog = GR_FOG_DISABLE;  // the fog source (low byte of grFogMode); flags are uniforms
 
+  // The fast paths (GlideContext::fast_paths, off with GLIDESHIM_EXACT=1): code that gives the
+  // exact path's bytes for less work per pixel. The combine units' sources and invert flags are
+  // compiled in (below) instead of selected by 0/1 uniforms; the alpha combine is left out when
+  // nothing can observe its result (no alpha test, no blending: a 565 buffer stores no alpha);
+  // the dither matrix entry comes from integer arithmetic on gl_FragCoord, and texels from
+  // texelFetch (GLSL 1.30). Off, the program is the exact path's, unchanged.
+  bool fast = false;
+  bool texel_fetch = false;  // fast, and the TMU has a source (texelFetch of a real texture)
+  // Fast, with the sources below compiled in. A state sweep (a test of every combine setting)
+  // would compile a program per setting, so the renderer compiles them in only for a state
+  // drawn a second time; the first time the sources stay uniforms (without_sources()).
+  bool sources = false;
+  int rows_mod4 = 0;         // fast dither: the target's height & 3
+  // Compiled-in sources, as unit_uniforms selects them (fast only; zero otherwise):
+  // local 1 = constant, other 0/1/2 = iterated/texture/constant.
+  int color_local = 0, color_other = 0, alpha_local = 0, alpha_other = 0;
+  bool color_invert = false, alpha_invert = false, tmu_rgb_invert = false, tmu_alpha_invert = false;
+
+  // Fidelity knobs (GLIDESHIM_PLAIN_GL, off by default): modelled behaviours replaced by what
+  // plain GL does, for measuring what each costs and how far the picture moves without it.
+  int plain = 0;  // kPlain* bits
+
+  PipelineKey without_sources() const;
   std::string defines() const;  // also the cache key
 };
 
-PipelineKey pipeline_key(const GlideContext &context);
+// The key of the context's current state; `fast` allows the fast paths.
+PipelineKey pipeline_key(const GlideContext &context, bool fast);
 bool reads_texture(const ColorPathState &path);
 
 std::string vertex_shader_source();

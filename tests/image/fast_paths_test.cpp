@@ -1,0 +1,299 @@
+// The shim's fast paths are exact: every benchmark workload rendered with them allowed
+// and with them forced off (GLIDESHIM_EXACT=1, read at grSstWinOpen) gives the same bytes. The
+// workloads: the SDK-style frames and shim_bench's 100,000-triangle stream (bench/
+// shim_workloads.h), frames of the fighter demo without shadows and with projected shadows on
+// both paths, every figure of the articles, and the one-feature programs of tests/sdk (fog,
+// LFB formats and pipeline, antialiasing, mip-mapping, palettes, .3df, the gu texture manager),
+// whose dumped frames are compared as files. A fast path that changed one byte would not be a
+// fast path but a fidelity knob, off by default (docs/environment.md).
+#include "context.h"
+#include "figures/figures.h"
+#include "gl/shader_source.h"
+#include "image_compare.h"
+#include "scene/fight_scene.h"
+#include "shim_workloads.h"
+#include "techniques/projected_shadow.h"
+#include "techniques/scene_pass.h"
+
+#include <glide.h>
+#include <glide_shim.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Sets GLIDESHIM_EXACT for the windows opened while it lives, and restores it after.
+class ExactSwitch {
+ public:
+  explicit ExactSwitch(bool exact) {
+    const char *old = std::getenv("GLIDESHIM_EXACT");
+    had_ = old != nullptr;
+    if (had_) old_ = old;
+    setenv("GLIDESHIM_EXACT", exact ? "1" : "0", 1);
+  }
+  ~ExactSwitch() {
+    if (had_) setenv("GLIDESHIM_EXACT", old_.c_str(), 1); else unsetenv("GLIDESHIM_EXACT");
+  }
+  ExactSwitch(const ExactSwitch &) = delete;
+  ExactSwitch &operator=(const ExactSwitch &) = delete;
+
+ private:
+  bool had_ = false;
+  std::string old_;
+};
+
+// The colour buffer and the depth buffer as the LFB reads them (565 and 16-bit depth codes).
+struct Buffers {
+  std::vector<FxU16> color, depth;
+};
+
+Buffers read_buffers(GrBuffer_t color_buffer) {
+  const int w = static_cast<int>(grSstScreenWidth()), h = static_cast<int>(grSstScreenHeight());
+  Buffers b;
+  b.color.resize(static_cast<std::size_t>(w) * h);
+  b.depth.resize(b.color.size());
+  EXPECT_TRUE(grLfbReadRegion(color_buffer, 0, 0, static_cast<FxU32>(w), static_cast<FxU32>(h),
+                              static_cast<FxU32>(w * 2), b.color.data()));
+  EXPECT_TRUE(grLfbReadRegion(GR_BUFFER_AUXBUFFER, 0, 0, static_cast<FxU32>(w),
+                              static_cast<FxU32>(h), static_cast<FxU32>(w * 2), b.depth.data()));
+  return b;
+}
+
+// Opens a 640x480 window with the fast paths allowed or not, runs `draw`, and returns what it
+// left in `color_buffer` and the depth buffer.
+Buffers render(bool exact, GrBuffer_t color_buffer, const std::function<void()> &draw) {
+  ExactSwitch exact_switch(exact);
+  grGlideInit();
+  Buffers b;
+  if (!grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                    GR_ORIGIN_UPPER_LEFT, 2, 1)) {
+    ADD_FAILURE() << glideShimGetLastErrorMessage();
+    return b;
+  }
+  EXPECT_EQ(glide_shim::current().fast_paths, !exact) << "GLIDESHIM_EXACT is read at grSstWinOpen";
+  glideShimClearError();
+  draw();
+  grSstIdle();
+  b = read_buffers(color_buffer);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
+  grGlideShutdown();
+  return b;
+}
+
+// Counts the differing words, so a failure says how far apart the two are.
+void expect_same(const Buffers &fast, const Buffers &exact, const std::string &what) {
+  ASSERT_EQ(fast.color.size(), exact.color.size()) << what;
+  ASSERT_FALSE(exact.color.empty()) << what;
+  std::size_t color = 0, depth = 0;
+  for (std::size_t i = 0; i < exact.color.size(); ++i) {
+    color += fast.color[i] != exact.color[i];
+    depth += fast.depth[i] != exact.depth[i];
+  }
+  EXPECT_EQ(color, 0u) << what << ": colour words that differ";
+  EXPECT_EQ(depth, 0u) << what << ": depth words that differ";
+}
+
+// ...and that the frame is not empty, so identical bytes mean something.
+void expect_drawn(const Buffers &b, const std::string &what) {
+  std::size_t differing = 0;
+  for (FxU16 word : b.color) differing += word != b.color.front();
+  EXPECT_GT(differing, b.color.size() / 100) << what << ": the frame is nearly uniform";
+}
+
+std::string workload_name(const ::testing::TestParamInfo<shim_workloads::Workload> &param) {
+  return shim_workloads::name(param.param);
+}
+
+std::string mode_name(const ::testing::TestParamInfo<int> &param) {
+  return param.param == 0 ? "NoShadows" : param.param == 1 ? "LfbPath" : "DirectPath";
+}
+
+std::string figure_name(const ::testing::TestParamInfo<const gs::FigureEntry *> &param) {
+  std::string name = param.param->name;
+  for (char &c : name) {
+    if (c == '-') c = '_';
+  }
+  return name;
+}
+
+class SdkFrames : public ::testing::TestWithParam<shim_workloads::Workload> {};
+
+TEST_P(SdkFrames, FastPathsGiveTheExactBytes) {
+  const shim_workloads::Workload workload = GetParam();
+  std::vector<FxU16> texels = shim_workloads::texture_565();
+  auto draw = [&] {
+    shim_workloads::set_up(workload, texels);
+    for (int frame = 0; frame < 2; ++frame) shim_workloads::glide_frame(workload);
+  };
+  const Buffers fast = render(false, GR_BUFFER_FRONTBUFFER, draw);
+  const Buffers exact = render(true, GR_BUFFER_FRONTBUFFER, draw);
+  expect_drawn(exact, shim_workloads::name(workload));
+  expect_same(fast, exact, shim_workloads::name(workload));
+}
+
+INSTANTIATE_TEST_SUITE_P(Workloads, SdkFrames,
+                         ::testing::Values(shim_workloads::Workload::Gouraud,
+                                           shim_workloads::Workload::Textured,
+                                           shim_workloads::Workload::Blended),
+                         workload_name);
+
+TEST(ShimBenchStream, FastPathsGiveTheExactBytes) {
+  const std::vector<shim_workloads::Triangle> triangles = shim_workloads::stream_triangles(100000);
+  std::vector<FxU16> texels = shim_workloads::stream_texture();
+  auto draw = [&] {
+    GrTexInfo info{GR_LOD_256, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565, texels.data()};
+    grTexDownloadMipMap(GR_TMU0, 0, GR_MIPMAPLEVELMASK_BOTH, &info);
+    // Twice: the fast paths compile a state's sources in when it is drawn a second time.
+    shim_workloads::stream_frame(triangles, info, 0);
+    shim_workloads::stream_frame(triangles, info, 0);
+  };
+  const Buffers fast = render(false, GR_BUFFER_BACKBUFFER, draw);
+  const Buffers exact = render(true, GR_BUFFER_BACKBUFFER, draw);
+  expect_drawn(exact, "stream");
+  expect_same(fast, exact, "stream");
+}
+
+// demo_bench's three frames: no shadows, projected shadows through the LFB, and through texture
+// memory directly; three moments of the fight, each after two frames before it.
+class FightFrames : public ::testing::TestWithParam<int> {};
+
+TEST_P(FightFrames, FastPathsGiveTheExactBytes) {
+  const int mode = GetParam();
+  auto draw = [&] {
+    gs::FightScene fight(640, 480, 256);
+    gs::ProjectedShadowOptions options;
+    options.direct_path = mode == 2;
+    for (int frame : {0, 1, 31, 32, 63}) {
+      const gs::Scene &scene = fight.at(static_cast<float>(frame) / 30.0f);
+      if (mode == 0) {
+        gs::render_scene(scene, gs::project_scene(scene));
+      } else {
+        gs::render_projected_shadows(scene, options, false);
+      }
+      grBufferSwap(0);
+    }
+  };
+  const char *names[3] = {"no shadows", "LFB path", "direct path"};
+  const Buffers fast = render(false, GR_BUFFER_FRONTBUFFER, draw);
+  const Buffers exact = render(true, GR_BUFFER_FRONTBUFFER, draw);
+  expect_drawn(exact, names[mode]);
+  expect_same(fast, exact, names[mode]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, FightFrames, ::testing::Values(0, 1, 2), mode_name);
+
+class Figures : public ::testing::TestWithParam<const gs::FigureEntry *> {};
+
+TEST_P(Figures, FastPathsGiveTheExactBytes) {
+  const gs::FigureEntry &entry = *GetParam();
+  auto make = [&](bool exact) {
+    ExactSwitch exact_switch(exact);
+    grGlideInit();
+    gs::Figure figure;
+    std::string error;
+    EXPECT_TRUE(gs::make_figure(entry, figure, error)) << error;
+    EXPECT_EQ(glide_shim::current().fast_paths, !exact);
+    grGlideShutdown();
+    return figure.image.rgb;
+  };
+  const std::vector<std::uint8_t> fast = make(false), exact = make(true);
+  ASSERT_FALSE(exact.empty());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < exact.size() && i < fast.size(); ++i) differing += fast[i] != exact[i];
+  EXPECT_EQ(fast.size(), exact.size());
+  EXPECT_EQ(differing, 0u) << entry.name << ": bytes that differ";
+}
+
+std::vector<const gs::FigureEntry *> every_figure() {
+  std::vector<const gs::FigureEntry *> all;
+  for (const gs::FigureEntry &entry : gs::figure_table()) all.push_back(&entry);
+  return all;
+}
+
+INSTANTIATE_TEST_SUITE_P(Articles, Figures, ::testing::ValuesIn(every_figure()), figure_name);
+
+std::string file_bytes(const fs::path &path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Runs tests/sdk/<name> for 2 frames in tests/sdk/data with every swap dumped; returns the dump
+// directory's frames as files.
+std::vector<std::string> run_sdk_program(const std::string &name, bool exact) {
+  const fs::path dir = fs::path(test_output_path(name + (exact ? "_exact" : "_fast")));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string command = std::string("cd ") + SDK_DATA_DIR + " && GLIDESHIM_EXACT=" +
+                              (exact ? "1" : "0") + " GLIDESHIM_DUMP_DIR=" + dir.string() + " " +
+                              SDK_PROGRAM_DIR + "/sdk_" + name + " -n 2 > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << file_bytes(dir / "log.txt");
+  std::vector<std::string> frames;
+  for (int i = 0; fs::exists(dir / ("frame_0000" + std::to_string(i) + ".png")); ++i) {
+    frames.push_back(file_bytes(dir / ("frame_0000" + std::to_string(i) + ".png")));
+  }
+  return frames;
+}
+
+class SdkPrograms : public ::testing::TestWithParam<const char *> {};
+
+TEST_P(SdkPrograms, FastPathsGiveTheExactBytes) {
+  const std::vector<std::string> fast = run_sdk_program(GetParam(), false);
+  const std::vector<std::string> exact = run_sdk_program(GetParam(), true);
+  ASSERT_FALSE(exact.empty()) << "no frame dumped";
+  ASSERT_EQ(fast.size(), exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    EXPECT_TRUE(fast[i] == exact[i]) << GetParam() << ": frame " << i << " differs";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Programs, SdkPrograms,
+                         ::testing::Values("fog_ramp", "polygon_fans", "state_round_trip",
+                                           "lfb_formats", "aa_lines", "lfb_pipeline",
+                                           "mip_levels", "palette_texture", "load_3df",
+                                           "gu_texture_manager"),
+                         [](const ::testing::TestParamInfo<const char *> &param) {
+                           return std::string(param.param);
+                         });
+
+// The fidelity knobs' list: the known names set their bits; a name the shim does not know is
+// reported at grSstWinOpen (naming it) and the window opens with the others applied.
+TEST(FidelityKnobs, KnownNamesSetTheirBits) {
+  std::string unknown;
+  EXPECT_EQ(glide_shim::parse_fidelity_knobs(nullptr, unknown), 0);
+  EXPECT_EQ(glide_shim::parse_fidelity_knobs("", unknown), 0);
+  EXPECT_EQ(glide_shim::parse_fidelity_knobs("write,bilinear", unknown),
+            glide_shim::kPlainWrite | glide_shim::kPlainBilinear);
+  EXPECT_EQ(unknown, "");
+  EXPECT_EQ(glide_shim::parse_fidelity_knobs("all", unknown),
+            glide_shim::kPlainWrite | glide_shim::kPlainIterators | glide_shim::kPlainCombine |
+                glide_shim::kPlainBilinear);
+}
+
+TEST(FidelityKnobs, AnUnknownNameIsReportedAndTheOthersApply) {
+  setenv("GLIDESHIM_PLAIN_GL", "combine,dithr", 1);
+  setenv("GLIDESHIM_QUIET", "1", 1);
+  grGlideInit();
+  glideShimClearError();
+  const bool opened = grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                                   GR_ORIGIN_UPPER_LEFT, 2, 1);
+  unsetenv("GLIDESHIM_PLAIN_GL");
+  unsetenv("GLIDESHIM_QUIET");
+  EXPECT_TRUE(opened);
+  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_ERR_INVALID_VALUE);
+  EXPECT_NE(std::string(glideShimGetLastErrorMessage()).find("'dithr'"), std::string::npos)
+      << glideShimGetLastErrorMessage();
+  EXPECT_EQ(glide_shim::current().fidelity_knobs, glide_shim::kPlainCombine);
+  grGlideShutdown();
+}
+
+}  // namespace
