@@ -239,6 +239,16 @@ bool acne() {
 
 int main(int argc, char **argv) {
   std::vector<std::string> sweeps(argv + 1, argv + argc);
+  if (sweeps.size() == 1 && (sweeps[0] == "--help" || sweeps[0] == "-h")) {
+    std::printf(
+        "usage: hard_case_sweeps [SWEEP...]\n"
+        "Prints, for each sweep (all of them when none is named), a markdown table of each\n"
+        "technique's misclassified %% of receiver pixels against the ray-cast truth, with its\n"
+        "interior false shadow and false light in brackets (docs/results.md, \"Numerical hard\n"
+        "cases\"). Sweeps: classes, acne, tilt, contact, translation, scale, shadow-size,\n"
+        "screen-size. Exit status 1 when a sweep could not render, 2 for an unknown sweep.\n");
+    return 0;
+  }
   if (sweeps.empty()) {
     sweeps = {"classes", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
   }
