@@ -191,7 +191,7 @@ bool screen_size() {
                every_technique());
 }
 
-// Issue 14's classes, on scenes the project had not seen: every technique at its defaults on
+// The classes of hard scenes (tests/hard_cases/README.md): every technique at its defaults on
 // each scene (a column per scene). A technique that cannot cast a shadow the scene has says so
 // and its cell reads "failed".
 bool classes() {
@@ -203,7 +203,7 @@ bool classes() {
         "light_facing_camera_posts"}) {
     columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
   }
-  return sweep("Issue 14's classes (tests/hard_cases/README.md), every technique at its defaults",
+  return sweep("Classes of hard scenes (tests/hard_cases/README.md), every technique at its defaults",
                "scene", columns, every_technique());
 }
 
