@@ -37,6 +37,18 @@ class WindowBackend : public ::testing::Test {
     return started != saved_.end() ? started->second : "osmesa";
   }
 
+  // Opens a window on headless_backend(), checks that backend was chosen, and draws and shows one
+  // cleared frame; returns the backend's name.
+  std::string open_headless_and_swap() {
+    const std::string value = headless_backend();
+    setenv("GLIDESHIM_BACKEND", value.c_str(), 1);
+    EXPECT_TRUE(open_window()) << glideShimGetLastErrorMessage();
+    EXPECT_STREQ(glideShimBackendName(), value.c_str());
+    grBufferClear(0, 0, 0);
+    grBufferSwap(1);
+    return value;
+  }
+
   static FxBool open_window() {
     return grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
                         GR_ORIGIN_UPPER_LEFT, 2, 1);
@@ -77,12 +89,8 @@ TEST_F(WindowBackend, UnknownBackendNamesTheWindowChoice) {
 TEST_F(WindowBackend, HeadlessHasNoKeysAndIsNeverClosed) {
   EXPECT_EQ(glideShimPollKey(), GLIDESHIM_KEY_NONE);  // no window at all
   EXPECT_FALSE(glideShimWindowClosed());
-  const std::string value = headless_backend();
-  setenv("GLIDESHIM_BACKEND", value.c_str(), 1);
-  ASSERT_TRUE(open_window()) << glideShimGetLastErrorMessage();
-  EXPECT_STREQ(glideShimBackendName(), value.c_str());
-  grBufferClear(0, 0, 0);
-  grBufferSwap(1);
+  const std::string value = open_headless_and_swap();
+  if (::testing::Test::HasFailure()) return;
   EXPECT_EQ(glideShimPollKey(), GLIDESHIM_KEY_NONE) << value;
   EXPECT_FALSE(glideShimWindowClosed()) << value;
   grSstWinClose();
@@ -93,12 +101,8 @@ TEST_F(WindowBackend, HoldingTheLastFrameNeedsAWindow) {
   // GLIDESHIM_HOLD=1 waits for a key in the window at grSstWinClose; headless there is no
   // window and no key, so the close must return at once and say nothing.
   setenv("GLIDESHIM_HOLD", "1", 1);
-  const std::string value = headless_backend();
-  setenv("GLIDESHIM_BACKEND", value.c_str(), 1);
-  ASSERT_TRUE(open_window()) << glideShimGetLastErrorMessage();
-  EXPECT_STREQ(glideShimBackendName(), value.c_str());
-  grBufferClear(0, 0, 0);
-  grBufferSwap(1);
+  const std::string value = open_headless_and_swap();
+  if (::testing::Test::HasFailure()) return;
   ::testing::internal::CaptureStderr();
   grSstWinClose();
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << value;
