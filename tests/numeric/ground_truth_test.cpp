@@ -306,7 +306,8 @@ TEST(GroundTruthTest, SkipsDegenerateTriangles) {
   EXPECT_EQ(with.rgb, without.rgb);
 }
 
-TEST(GroundTruthTest, FightSceneTime) {
+// Prints the time the truth takes on a full fight frame (for the reader; nothing asserts it).
+TEST(GroundTruthTest, FightSceneHasCastShadow) {
   gs::FightScene fight(640, 480, 256);
   const gs::Scene &scene = fight.at(2.0f);
   gs::GroundTruth truth;

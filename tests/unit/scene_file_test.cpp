@@ -452,6 +452,8 @@ std::string write_big_scene(const std::string &name, std::string text) {
   return path;
 }
 
+// Bounded work is shown by the refusal naming a parse-time limit (depth, value count) and by the
+// child's peak memory; the time is printed for the reader, never asserted (a loaded machine).
 TEST(SceneFileBounds, DeepNestingIsRefusedWhileParsing) {
   std::string text(kAlmostLimit / 2, '[');
   text += std::string(kAlmostLimit / 2, ']');
@@ -459,7 +461,6 @@ TEST(SceneFileBounds, DeepNestingIsRefusedWhileParsing) {
   EXPECT_FALSE(load.loaded);
   EXPECT_NE(load.error.find("nested more than 32 deep"), std::string::npos) << load.error;
   EXPECT_LT(load.peak_kib, 100 * 1024) << "KiB";
-  EXPECT_LT(load.seconds, 10.0);
   std::cout << "16 MiB of nested arrays: " << load.seconds << " s, peak " << load.peak_kib / 1024
             << " MiB\n";
 }
@@ -472,7 +473,6 @@ TEST(SceneFileBounds, LongArraysAreRefusedWhileParsing) {
   EXPECT_FALSE(load.loaded);
   EXPECT_NE(load.error.find("more than 100000 JSON values"), std::string::npos) << load.error;
   EXPECT_LT(load.peak_kib, 100 * 1024) << "KiB";
-  EXPECT_LT(load.seconds, 10.0);
   std::cout << "16 MiB of one array: " << load.seconds << " s, peak " << load.peak_kib / 1024
             << " MiB\n";
 }
