@@ -179,7 +179,7 @@ int main(int argc, char **argv) {
   }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::printf("  peak memory            %7.1f MB   (target under 200)\n",
+  std::printf("  peak memory            %7.1f MB   (target under 150)\n",
               static_cast<double>(usage.ru_maxrss) / 1024.0);
   return 0;
 }

@@ -4,6 +4,7 @@
 #include "scene/fighter.h"
 #include "scene/scene_json.h"
 #include "scene/input_file.h"
+#include "scene/projected_image_file.h"
 #include "scene/ring.h"
 #include "scene/scene.h"
 #include "scene/slides.h"

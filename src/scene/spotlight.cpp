@@ -1,21 +1,14 @@
 // Beam patterns, distance attenuation and their textures. See spotlight.h for the spaces.
 #include "scene/spotlight.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <system_error>
 
 namespace gs {
 namespace {
-
-constexpr std::uintmax_t kMaxImageFileBytes = 64u << 20;  // far above any slide or beam map
 
 float smoothstep(float edge0, float edge1, float x) {
   const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
@@ -137,57 +130,6 @@ std::vector<std::uint8_t> attenuation_texels(const SpotLight &light, float near_
     texels[static_cast<std::size_t>(i)] = to_byte(distance_attenuation(light, d));
   }
   return texels;
-}
-
-bool load_projected_image(const std::string &path, int side, ProjectedImage &image,
-                          std::string &error) {
-  // Only a regular file of a sane size is handed to the decoder: a FIFO or a device would block
-  // or never end.
-  std::error_code code;
-  if (!std::filesystem::is_regular_file(path, code)) {
-    error = path + ": cannot read the image (not a regular file)";
-    return false;
-  }
-  const std::uintmax_t bytes = std::filesystem::file_size(path, code);
-  if (code) {
-    error = path + ": cannot read the image (" + code.message() + ")";
-    return false;
-  }
-  if (bytes > kMaxImageFileBytes) {
-    error = path + ": cannot read the image (larger than 64 MiB)";
-    return false;
-  }
-  OIIO::ImageBuf file(path);
-  if (!file.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    error = path + ": cannot read the image (" + file.geterror() + ")";
-    return false;
-  }
-  const OIIO::ImageSpec &spec = file.spec();
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
-    error = path + ": the image is empty";
-    return false;
-  }
-  // Grey images give the same value to r, g and b; alpha is not used.
-  const int channels = std::min(spec.nchannels, 3);
-  const OIIO::ImageBuf resized =
-      OIIO::ImageBufAlgo::resize(file, "", 0, OIIO::ROI(0, side, 0, side, 0, 1, 0, spec.nchannels));
-  if (resized.has_error()) {
-    error = path + ": cannot resample the image (" + resized.geterror() + ")";
-    return false;
-  }
-  ProjectedImage loaded;
-  loaded.side = side;
-  loaded.rgb.resize(static_cast<std::size_t>(side * side));
-  std::vector<float> pixels(static_cast<std::size_t>(side * side * spec.nchannels));
-  resized.get_pixels(OIIO::ROI(0, side, 0, side, 0, 1, 0, spec.nchannels), OIIO::TypeDesc::FLOAT,
-                     pixels.data());
-  for (std::size_t i = 0; i < loaded.rgb.size(); ++i) {
-    const float *p = &pixels[i * static_cast<std::size_t>(spec.nchannels)];
-    loaded.rgb[i] = channels == 3 ? glm::vec3(p[0], p[1], p[2]) : glm::vec3(p[0]);
-    loaded.rgb[i] = glm::clamp(loaded.rgb[i], 0.0f, 1.0f);
-  }
-  image = std::move(loaded);
-  return true;
 }
 
 }  // namespace gs

@@ -51,9 +51,4 @@ std::vector<std::uint8_t> beam_texels(const SpotLight &light, int side);
 std::vector<std::uint8_t> attenuation_texels(const SpotLight &light, float near_distance,
                                              float far_distance, int width);
 
-// A projected image read from a file (PNG, JPEG, ... through OpenImageIO), resampled to a square
-// power-of-two side for the texture unit. False with `error` naming the file on any problem.
-bool load_projected_image(const std::string &path, int side, ProjectedImage &image,
-                          std::string &error);
-
 }  // namespace gs
