@@ -1,6 +1,6 @@
 // Chapter "fog": the fog mode, colour and 64-entry table, and the gu* table generators written
 // as 3dfx's gu.c computes them (float arithmetic, truncation to 0..255). The per-pixel fog is in
-// the generated fragment shader (shader_source.cpp): table fog indexed by the W depth code.
+// the generated fragment shader (gl/shader_pixel_ops.cpp): table fog indexed by the W depth code.
 #include "context.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // grSstPerfStats / grSstResetPerfStats: the FBI's pixel counters (pixels in, failed chroma key,
 // failed depth test, failed alpha test, written). Counting starts at the first reset, since it
-// draws every primitive separately with occlusion queries (gl_renderer.cpp); until then the
+// draws every primitive separately with occlusion queries (gl/draw_path.cpp); until then the
 // counters read zero. grTriStats / grResetTriStats: triangles set up and drawn (draw.cpp).
 #include "context.h"
 

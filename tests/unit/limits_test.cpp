@@ -3,7 +3,7 @@
 // command line and the Glide window each get the request a careless or hostile input would make.
 // Limits already covered elsewhere: divisions, triangle budget, screen and shadow sizes in scene
 // files (scene_file_test.cpp, tests/data/bad_scenes); texture LODs, TMU memory, LFB regions and
-// coordinates in the shim (bad_input_test.cpp).
+// coordinates in the shim (bad_input_*_test.cpp).
 #include "scene/mesh.h"
 #include "scene/scene.h"
 

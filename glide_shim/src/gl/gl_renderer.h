@@ -1,6 +1,8 @@
 // The GL side of the shim: the emulated frame buffer (two RGB565 colour buffers and one depth
 // buffer in a framebuffer object), the queue of primitives waiting to be drawn, and the
 // translation of the context's state into a generated shader and fixed-function settings.
+// Defined in gl_renderer.cpp (the frame buffer), draw_path.cpp, program_cache.cpp and
+// compare_to_bias_draw.cpp.
 #pragma once
 
 #include "backends/backend.h"
