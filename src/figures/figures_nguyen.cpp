@@ -6,6 +6,7 @@
 #include "figures/nguyen_steps.h"
 
 #include "scene/fight_scene.h"
+#include "scene/fighter.h"
 #include "measure/ground_truth.h"
 #include "measure/metrics.h"
 #include "techniques/scene_pass.h"
@@ -86,6 +87,10 @@ void figure_nguyen_1(Figure &figure, FigureFault fault) {
   constexpr float kTime = 5.6f;
   FightScene fight(kFigureWindowWidth, kFigureWindowHeight, 256);
   Scene scene = fight.at(kTime);
+  // The article's pipeline draws a simplified caster into the texture; the fight itself casts
+  // from the fighters' own meshes, so the figure gives them the simplified one back.
+  for (int i = 0; i < 2; ++i)
+    scene.objects[FightScene::kFighters[i]].shadow_mesh = build_fighter_lod(fight_loop_pose(i, kTime));
   const std::size_t receiver = FightScene::kFighters[fight_light_side(kTime) < 0.5f ? 1 : 0];
   const std::size_t caster = receiver == FightScene::kFighters[0] ? FightScene::kFighters[1] : FightScene::kFighters[0];
   Words mask;

@@ -13,7 +13,9 @@ namespace gs {
 struct SceneObject {
   std::string name;
   Mesh mesh;                       // model space
-  Mesh shadow_mesh;                // simplified caster for the shadow pass; empty: use `mesh`
+  // A simplified caster for the shadow pass; empty: use `mesh`. Only the figures of the
+  // article's pipeline give one: its shadow is not the object's (fight_scene.cpp).
+  Mesh shadow_mesh;
   glm::mat4 model_to_world{1.0f};
   bool casts_shadow = true;
   bool receives_shadow = true;

@@ -153,11 +153,6 @@ SpotLight read_light(const Field &f, const std::filesystem::path &scene_dir) {
   return light;
 }
 
-// An object's meshes, both in model space, before its colour and transform are applied.
-struct ObjectMeshes {
-  Mesh mesh;
-  Mesh shadow_mesh;  // empty unless the shape has a simplified caster (fighters)
-};
 
 // Counts the triangles of the scene so far against kMaxSceneTriangles.
 // Shapes with a size parameter are checked before they are built, so an absurd request
@@ -179,20 +174,21 @@ class TriangleBudget {
   std::size_t used_ = 0;
 };
 
-ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget &budget) {
-  ObjectMeshes out;
+// The shape's mesh, model space, before its colour and transform are applied.
+Mesh read_shape(const Field &f, const std::string &shape, TriangleBudget &budget) {
+  Mesh out;
   if (shape == "box") {
     f.require_object_with_keys({"shape", "size"});
     const glm::vec3 size =
         f.has("size") ? vec3(f["size"], "a number > 0", positive) : glm::vec3(1.0f);
-    out.mesh = make_box(0.5f * size);
+    out = make_box(0.5f * size);
   } else if (shape == "sphere") {
     f.require_object_with_keys({"shape", "radius", "slices", "stacks"});
     const float radius = f.has("radius") ? number(f["radius"], "a number > 0", positive) : 0.5f;
     const int slices = f.has("slices") ? integer(f["slices"], 3, kMaxSlices) : 24;
     const int stacks = f.has("stacks") ? integer(f["stacks"], 2, kMaxStacks) : 16;
     budget.check(f, 2 * static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks));
-    out.mesh = make_sphere(radius, slices, stacks);
+    out = make_sphere(radius, slices, stacks);
   } else if (shape == "plane" || shape == "heightfield") {
     const bool relief = shape == "heightfield";
     if (relief)
@@ -209,11 +205,11 @@ ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget
       const float wavelength =
           f.has("wavelength") ? number(f["wavelength"], "a number > 0", positive) : 4.0f;
       const float k = glm::two_pi<float>() / wavelength;  // radians per metre, model space
-      out.mesh = make_heightfield(size, divisions, [amplitude, k](float x, float z) {
+      out = make_heightfield(size, divisions, [amplitude, k](float x, float z) {
         return amplitude * std::sin(k * x) * std::cos(k * z);
       });
     } else {
-      out.mesh = make_plane(size, divisions);
+      out = make_plane(size, divisions);
     }
   } else if (shape == "cylinder") {
     f.require_object_with_keys({"shape", "radius", "length", "slices", "caps"});
@@ -222,7 +218,7 @@ ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget
     const int slices = f.has("slices") ? integer(f["slices"], 3, kMaxSlices) : 24;
     const bool caps = f.has("caps") ? boolean(f["caps"]) : true;
     budget.check(f, 4 * static_cast<std::size_t>(slices));
-    out.mesh = make_cylinder(radius, length, slices, caps);
+    out = make_cylinder(radius, length, slices, caps);
   } else if (shape == "fighter") {
     f.require_object_with_keys({"shape", "pose", "phase", "body_color"});
     Move move = Move::Guard;
@@ -236,11 +232,10 @@ ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget
     const glm::vec3 body =  // default: the demo's red fighter
         f.has("body_color") ? color(f["body_color"]) : glm::vec3(0.75f, 0.12f, 0.1f);
     const FighterPose pose = pose_for(move, phase);
-    out.mesh = build_fighter(pose, body);
-    out.shadow_mesh = build_fighter_lod(pose);
+    out = build_fighter(pose, body);  // it casts from this mesh too (fight_scene.cpp says why)
   } else if (shape == "ring") {
     f.require_object_with_keys({"shape"});
-    out.mesh = build_ring();
+    out = build_ring();
   } else {
     f["shape"].fail("unknown shape '" + shape +
                     "' (expected box, sphere, plane, heightfield, cylinder, fighter, ring or an "
@@ -249,10 +244,9 @@ ObjectMeshes read_shape(const Field &f, const std::string &shape, TriangleBudget
   return out;
 }
 
-ObjectMeshes read_mesh(const Field &f, const std::filesystem::path &scene_dir,
-                       TriangleBudget &budget) {
+Mesh read_mesh(const Field &f, const std::filesystem::path &scene_dir, TriangleBudget &budget) {
   if (!f.value.is_object()) f.fail("must be an object");
-  ObjectMeshes out;
+  Mesh out;
   if (f.has("obj")) {
     if (f.has("shape")) f.fail("give either \"shape\" or \"obj\", not both");
     f.require_object_with_keys({"obj"});
@@ -262,13 +256,13 @@ ObjectMeshes read_mesh(const Field &f, const std::filesystem::path &scene_dir,
     // Relative to the scene file's directory, so a scene loads from any working directory.
     const std::string obj_path = (scene_dir / relative).lexically_normal().string();
     std::string obj_error;
-    if (!load_obj(obj_path, out.mesh, obj_error)) obj.fail(obj_error);
+    if (!load_obj(obj_path, out, obj_error)) obj.fail(obj_error);
   } else if (f.has("shape")) {
     out = read_shape(f, text(f["shape"]), budget);
   } else {
     f.fail("needs a \"shape\" or an \"obj\" path");
   }
-  budget.spend(f, out.mesh.triangle_count() + out.shadow_mesh.triangle_count());
+  budget.spend(f, out.triangle_count());
   return out;
 }
 
@@ -310,13 +304,8 @@ SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
   if (recolor && f["mesh"].value.contains("body_color"))  // only fighters accept body_color
     f["color"].fail("a fighter takes body_color or color, not both");
 
-  ObjectMeshes meshes = read_mesh(f["mesh"], scene_dir, budget);
-  if (recolor) {
-    meshes.mesh.set_color(new_color);
-    meshes.shadow_mesh.set_color(new_color);
-  }
-  object.mesh = std::move(meshes.mesh);
-  object.shadow_mesh = std::move(meshes.shadow_mesh);
+  object.mesh = read_mesh(f["mesh"], scene_dir, budget);
+  if (recolor) object.mesh.set_color(new_color);
   return object;
 }
 

@@ -6,6 +6,7 @@
 #include "techniques/depth_map_shadow.h"
 
 #include "techniques/depth_map_passes.h"
+#include "techniques/facing_triangles.h"
 #include "techniques/gl_api.h"
 #include "techniques/gl_beam_mask.h"
 #include "techniques/gl_light_units.h"
@@ -47,12 +48,6 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
     meshes.push_back(std::move(world));
   }
   return meshes;
-}
-
-// Whether a vertex's surface faces `light`: where the mask may say the depth map took it away
-// (whether the point is in the light's beam is decided per pixel, by GlBeamMask).
-bool faces(const SpotLight &light, const glm::vec3 &world, const glm::vec3 &normal) {
-  return glm::dot(normal, light.position - world) > 0.0f;
 }
 
 }  // namespace
@@ -175,7 +170,7 @@ void Passes::mask_passes() {
   gl_.glClear(GL_COLOR_BUFFER_BIT);  // colour only: the depth buffer keeps the frame's surfaces
   gl_.glDepthFunc(GL_EQUAL);
   gl_.glDepthMask(GL_FALSE);
-  // White where alpha = (the surface faces the light, per vertex) x (the shadowed fraction of the
+  // White where alpha = (the surface faces the light, per face) x (the shadowed fraction of the
   // percentage-closer lookup) x (q gate) x (the beam's footprint, per pixel) is at least 1/2:
   // the one definition of shadow (technique.h), at least half of the light's view blocked where
   // the light shines.
@@ -192,12 +187,12 @@ void Passes::mask_passes() {
     gl_.glEnable(GL_TEXTURE_2D);
     for (const WorldMesh &mesh : meshes_) {
       if (!mesh.object->receives_shadow) continue;
-      std::vector<glm::vec4> colors;
-      for (std::size_t i = 0; i < mesh.position.size(); ++i) {
-        colors.emplace_back(1.0f, 1.0f, 1.0f,
-                            faces(spot, mesh.position[i], mesh.normal[i]) ? 1.0f : 0.0f);
-      }
-      draw(mesh, colors);
+      // Unshared corners from the same world positions: the depths the ambient pass wrote.
+      const FacingTriangles triangles =
+          facing_triangles(mesh.position, mesh.object->mesh.triangles, spot.position);
+      gl_.glVertexPointer(3, GL_FLOAT, 0, triangles.position.data());
+      gl_.glColorPointer(4, GL_FLOAT, 0, triangles.color.data());
+      gl_.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.position.size()));
     }
     footprint.release();
   }

@@ -36,13 +36,19 @@ namespace {
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
 // Each light gets its own band above the previous one's seals, so its covers pass them.
-// Over a receiver the scene pass clipped through the camera the cover's margin is 8 codes (w
-// times 1.0014): the scene pass drew that receiver as a fan of its clipped polygon, and on a
-// floor seen at a grazing angle from 0.3 m the hardware's iteration of 1/w across such a large
-// (guard-band) triangle strays from the plane of its vertices by up to 4 codes
-// (tests/hard_cases/eye_near_plane.json); an occluder closer to the receiver than 0.14% of its
-// distance may let such a cover show through.
-constexpr float kCoverCodes = 1.0f;
+// The cover's margin is 2 codes (w times 1.0003): across a receiver triangle that spans much of
+// the screen the iteration of 1/w strays from the plane of its snapped vertices by more than a
+// code, and a margin of 1 left speckled holes in shadows near the camera (0.06 to 0.27% of the
+// receiver pixels, interior, on tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A
+// larger margin lets covers on a floor pass the feet of what stands on it, a pixel or two of
+// the contact line (4 codes: 5 pixels on a fighter's foot).
+// Over a receiver the scene pass clipped through the camera it is 8 codes (w times 1.0014): the
+// scene pass drew that receiver as a fan of its clipped polygon, and on a floor seen at a grazing
+// angle from 0.3 m the hardware's iteration of 1/w across such a large (guard-band) triangle
+// strays from the plane of its vertices by up to 4 codes (tests/hard_cases/eye_near_plane.json).
+// An occluder closer to the receiver than 0.03% (0.14%) of its distance may let a cover show
+// through.
+constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kSealCodes = 2.0f * kClippedCoverCodes;
 constexpr float kLightBandCodes = kClippedCoverCodes + kSealCodes;

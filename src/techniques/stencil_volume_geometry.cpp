@@ -136,13 +136,17 @@ void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light,
                              on(e.to), beyond(e.from), beyond(e.to)});
     }
     if (!caps) continue;
+    // Both caps are the triangles facing away from the light: the near cap where they are,
+    // turned round to face the light, the far cap sent to infinity. Their rims are the
+    // silhouette, so the volume is closed, and it holds what lies behind the caster's dark side.
+    // (The light-facing triangles would close it as well, but they lie on the caster's lit
+    // surface, and wherever the drawn surface is not exactly that mesh - a simplified
+    // shadow_mesh, or depths rounded differently - the lit surface would land inside its own
+    // volume and be counted in shadow. The dark side is never lit, whatever the count says.)
     for (std::size_t t = 0; t < caster.mesh.triangles.size(); ++t) {
+      if (facing[t]) continue;
       const glm::uvec3 &c = caster.mesh.triangles[t];
-      if (facing[t]) {
-        out.insert(out.end(), {on(c.x), on(c.y), on(c.z)});
-      } else {
-        out.insert(out.end(), {beyond(c.x), beyond(c.y), beyond(c.z)});
-      }
+      out.insert(out.end(), {on(c.x), on(c.z), on(c.y), beyond(c.x), beyond(c.y), beyond(c.z)});
     }
   }
 }

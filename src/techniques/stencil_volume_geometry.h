@@ -20,8 +20,8 @@ struct Caster {
 
 // Every caster's shadow volume from a point light at `light`, as outward-facing triangles in
 // homogeneous world coordinates relative to `origin`: the silhouette extruded to infinity and,
-// for z-fail, closed by the light-facing triangles (front cap) and the back-facing ones sent to
-// infinity (back cap).
+// for z-fail, closed by the triangles facing away from the light, turned round where they are
+// (near cap) and sent to infinity (far cap).
 void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light,
                    const glm::vec3 &origin, bool caps, std::vector<glm::vec4> &out);
 

@@ -5,6 +5,7 @@
 // flips rows on every read). Volumes are homogeneous world points, w = 0 away from the light.
 #include "techniques/stencil_volume_shadow.h"
 
+#include "techniques/facing_triangles.h"
 #include "techniques/gl_api.h"
 #include "techniques/gl_beam_mask.h"
 #include "techniques/gl_light_units.h"
@@ -116,8 +117,8 @@ void count_volumes(const GlApi &gl, const std::vector<glm::vec4> &volumes, bool 
   gl.glClear(GL_STENCIL_BUFFER_BIT);
   gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   gl.glDepthMask(GL_FALSE);
-  // LESS, so a front cap on the caster's own lit face (same vertices, same depth) fails and is
-  // counted with the exit behind it: the lit face stays lit.
+  // LESS, so z-fail's near cap on the caster's own dark side (same vertices, same depth) fails
+  // and counts that surface in the volume: it faces away from the light, unlit either way.
   gl.glDepthFunc(GL_LESS);
   gl.glDisable(GL_CULL_FACE);
   gl.glEnable(GL_STENCIL_TEST);
@@ -241,21 +242,23 @@ class StencilVolumeShadow final : public ShadowTechnique {
       build_volumes(frame.casters, light.position, frame.origin, z_fail, volumes);
       count_volumes(gl_, volumes, z_fail);
       // White where the count is not 0 and this light shines on the visible surface: alpha =
-      // (the surface faces the light, per vertex) x (the beam's footprint, per pixel) at least
-      // 1/2, the one definition of shadow (technique.h).
-      for (Surface &surface : frame.surfaces) {
-        for (std::size_t i = 0; i < surface.world.size(); ++i) {
-          const bool faces = glm::dot(surface.normal[i], light.position - surface.world[i]) > 0.0f;
-          surface.color[i] = glm::vec4(1.0f, 1.0f, 1.0f, faces ? 1.0f : 0.0f);
-        }
-      }
+      // (the surface faces the light, per face, as the truth decides it) x (the beam's
+      // footprint, per pixel) at least 1/2, the one definition of shadow (technique.h).
       GlBeamMask footprint(gl_, light, 0, frame.origin);
       footprint.bind();
       gl_.glEnable(GL_ALPHA_TEST);
       gl_.glAlphaFunc(GL_GEQUAL, 0.5f);
       gl_.glDepthFunc(GL_EQUAL);
       gl_.glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-      draw_surfaces(gl_, frame.surfaces, true);
+      for (const Surface &surface : frame.surfaces) {
+        if (!surface.object->receives_shadow) continue;
+        // Unshared corners from the same drawn positions: the depths the ambient pass wrote.
+        const FacingTriangles triangles = facing_triangles(
+            surface.drawn, surface.object->mesh.triangles, light.position - frame.origin);
+        gl_.glVertexPointer(3, GL_FLOAT, 0, triangles.position.data());
+        gl_.glColorPointer(4, GL_FLOAT, 0, triangles.color.data());
+        gl_.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.position.size()));
+      }
       gl_.glDisable(GL_ALPHA_TEST);
       footprint.release();
     }
@@ -309,9 +312,10 @@ class StencilVolumeShadow final : public ShadowTechnique {
 
   // Step 3: this light's direct term added where the stencil count is 0 (and, on objects that
   // receive no shadow, everywhere). Casters shadow their own far sides and whatever of
-  // themselves lies in their volume, which is physically right; their lit faces are kept lit by
-  // count_volumes' depth test. A caster drawn from a simplified shadow_mesh (the fighters) is
-  // not its volume's exact surface, so a few pixels near its silhouette may darken.
+  // themselves lies in their volume, which is physically right; their lit faces lie in front of
+  // their volume, which starts at the dark side (build_volumes). A caster drawn from a
+  // simplified shadow_mesh is not its volume's exact surface, so a few pixels near its
+  // silhouette may darken.
   // A beam map or slide, and exact attenuation, are applied per pixel by texture units 2 and 3
   // (gl_light_units.h); the vertex colours carry the rest of the light.
   void draw_lit_pass(const SpotLight &light, FrameData &frame) {

@@ -127,7 +127,7 @@ TEST_F(StencilVolumeShadowTest, FootprintOnTheFloorMatchesTheProjectedTexture) {
 
   // The camera is outside every volume, so z-fail must agree with the automatic z-pass.
   const Mask z_fail = stencil_mask(scene, Mode::ZFail);
-  EXPECT_EQ(count(both(z_fail, box)), 0) << "z-fail's front cap shadows the lit face";
+  EXPECT_EQ(count(both(z_fail, box)), 0) << "z-fail's caps shadow the lit face";
   EXPECT_LE(count(without(z_fail, full)) + count(without(full, z_fail)), 0.01 * count(full));
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }

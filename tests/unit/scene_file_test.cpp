@@ -116,8 +116,9 @@ TEST(SceneFile, FightersLoads) {
   for (std::size_t i : {1u, 2u}) {
     const gs::SceneObject &fighter = scene.objects[i];
     EXPECT_TRUE(fighter.casts_shadow) << fighter.name;
-    EXPECT_GT(fighter.shadow_mesh.triangle_count(), 0u) << fighter.name;
-    EXPECT_LT(fighter.shadow_mesh.triangle_count(), fighter.mesh.triangle_count()) << fighter.name;
+    // One mesh, drawn and casting: a simplified caster's shadow lies off the true one.
+    EXPECT_GT(fighter.mesh.triangle_count(), 1000u) << fighter.name;
+    EXPECT_TRUE(fighter.shadow_mesh.triangles.empty()) << fighter.name;
   }
   EXPECT_EQ(scene.objects[1].name, "red fighter");
   EXPECT_EQ(scene.objects[2].name, "blue fighter");
