@@ -32,7 +32,7 @@ std::string file_bytes(const std::string &path) {
 }
 
 TEST(SampleProgram, ArticlePortRendersItsShadow) {
-  // The article's five steps as plain C Glide code (demo/article_port.c), run as a user would.
+  // The article's five steps as plain C Glide code (examples/article_port.c), run as a user would.
   const std::string png = output_path("article_port.png");
   std::remove(png.c_str());
   const std::string command = std::string(ARTICLE_PORT_PATH) + " " + png + " > /dev/null";
@@ -40,7 +40,7 @@ TEST(SampleProgram, ArticlePortRendersItsShadow) {
   EXPECT_TRUE(matches_reference("article_port", png, kAcrossCpus));
 }
 
-// demo/crate_3df.c, an SDK-style program, run as a user would from examples/data (where its .3df
+// examples/crate_3df.c, an SDK-style program, run as a user would from examples/data (where its .3df
 // textures are) with the frame dump on into its own directory `run` (tests may run at once).
 // Returns that directory; the program's output is in log.txt there, its exit status in `status`.
 std::filesystem::path run_crate_3df(const std::string &run, const std::string &arguments,

@@ -1,6 +1,6 @@
 // The numerical hard cases of issue #6 (tests/hard_cases/README.md states the correct behaviour
 // of each): every technique the case concerns renders the case's scene, and its shadow mask is
-// compared with the ray-cast ground truth (src/ground_truth.h) or with an exact expectation.
+// compared with the ray-cast ground truth (src/measure/ground_truth.h) or with an exact expectation.
 // Thresholds are fractions of the receiver pixels; each says what the technique can do and why.
 #include "hard_case_checks.h"
 

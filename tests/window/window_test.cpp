@@ -113,7 +113,7 @@ TEST(DemoProgram, KeysTypedInTheWindowReachTheProgram) {
 // ---- An unmodified SDK-style program: it knows nothing of windows or keys ----
 
 TEST(SdkProgram, WindowShowsTheHeadlessFrame) {
-  // demo/crate_3df.c is plain Glide: 640x480 ABGR, -n frames, textures from .3df files. The
+  // examples/crate_3df.c is plain Glide: 640x480 ABGR, -n frames, textures from .3df files. The
   // same binary runs headless (frame dump) and in the window; GLIDESHIM_HOLD=1 keeps its last
   // frame up after it closes Glide, until a key.
   const std::string dump = output_file("crate_3df_headless");
