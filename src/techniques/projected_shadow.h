@@ -84,9 +84,9 @@ struct ShadowTexture {
 // sow, tow and the projective divisor; colour unused).
 struct ShadowTriangle {
   GrVertex v[3];
-  // False: no texel within bilinear reach of the triangle's (s, t) is covered by the caster
-  // (LightView::covered), so every pixel of it samples alpha 0, which step 5's alpha test
-  // rejects; step 5 does not draw it (its result would be the same bytes).
+  // False: no texel within bilinear reach of the triangle's (s, t) (and half a texel more) is
+  // covered by the caster (LightView::covered), so every pixel of it samples alpha 0, which
+  // step 5's alpha test rejects; step 5 does not draw it (its result would be the same bytes).
   bool reaches_caster = true;
 };
 

@@ -51,8 +51,12 @@ bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t
 
 // Whether any of LightView::covered's cells lies within reach of a receiver polygon given by
 // its light clip coordinates (all with w > 0): the texel box its projection spans (convex, so
-// its corners bound it), widened by the texel bilinear filtering reads beyond a sample.
+// its corners bound it), widened by kReachTexels: bilinear filtering reads texels whose centres
+// lie less than one texel from the sample, and the half texel more absorbs the shim's 1/16
+// snapping of the caster's vertices in step 1 and of (s, t) in step 5 (a miss here would change
+// bytes; a spare cell only costs its drawing).
 bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  constexpr float kReachTexels = 1.5f;
   glm::vec2 low(INFINITY), high(-INFINITY);
   for (std::size_t i = 0; i < count; ++i) {
     const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
@@ -61,10 +65,12 @@ bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, st
     high = glm::max(high, uv);
   }
   const float cell = static_cast<float>(view.size) / LightView::kFineCells;
-  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
-  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
-  const int x1 = std::min(LightView::kFineCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
-  const int y1 = std::min(LightView::kFineCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - kReachTexels) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - kReachTexels) / cell)));
+  const int x1 = std::min(LightView::kFineCells - 1,
+                          static_cast<int>(std::floor((high.x + kReachTexels) / cell)));
+  const int y1 = std::min(LightView::kFineCells - 1,
+                          static_cast<int>(std::floor((high.y + kReachTexels) / cell)));
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       if (view.covered[static_cast<std::size_t>(y * LightView::kFineCells + x)]) return true;
