@@ -83,8 +83,12 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     depth[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
+  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
   auto cell_index = [&](float texels) {
     return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
+  };
+  auto fine_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
   };
   // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.
   auto occupy = [&](const GrVertex *const *corners, std::size_t count, float nearest) {
@@ -98,6 +102,11 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
         const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
         view.occupied[cell_at] = true;
         view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
+      }
+    }
+    for (int cy = fine_index(y0); cy <= fine_index(y1); ++cy) {
+      for (int cx = fine_index(x0); cx <= fine_index(x1); ++cx) {
+        view.covered[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
   };
@@ -205,7 +214,7 @@ constexpr FxI16 kSealCodes = kClippedCodes + 16;
 
 void draw_exact(const ReceiverCoords &receivers) {
   for (const ShadowTriangle &t : receivers.triangles) {
-    guDrawTriangleWithClip(&t.v[0], &t.v[1], &t.v[2]);
+    if (t.reaches_caster) guDrawTriangleWithClip(&t.v[0], &t.v[1], &t.v[2]);
   }
 }
 

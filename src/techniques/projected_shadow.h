@@ -68,6 +68,11 @@ struct LightView {
   static constexpr int kCells = 16;
   std::vector<bool> occupied = std::vector<bool>(kCells * kCells, false);
   std::vector<float> nearest = std::vector<float>(kCells * kCells, INFINITY);
+  // The same cover on a finer grid (2x2 texels at 256), which selects no triangle (the 16x16
+  // depth test above stays as it is): step 5 skips a selected triangle none of whose fine cells
+  // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
+  static constexpr int kFineCells = 128;
+  std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
 };
 
 struct ShadowTexture {
@@ -79,6 +84,10 @@ struct ShadowTexture {
 // sow, tow and the projective divisor; colour unused).
 struct ShadowTriangle {
   GrVertex v[3];
+  // False: no texel within bilinear reach of the triangle's (s, t) (and half a texel more) is
+  // covered by the caster (LightView::covered), so every pixel of it samples alpha 0, which
+  // step 5's alpha test rejects; step 5 does not draw it (its result would be the same bytes).
+  bool reaches_caster = true;
 };
 
 struct ReceiverCoords {

@@ -49,6 +49,36 @@ bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t
   return false;
 }
 
+// Whether any of LightView::covered's cells lies within reach of a receiver polygon given by
+// its light clip coordinates (all with w > 0): the texel box its projection spans (convex, so
+// its corners bound it), widened by kReachTexels: bilinear filtering reads texels whose centres
+// lie less than one texel from the sample, and the half texel more absorbs the shim's 1/16
+// snapping of the caster's vertices in step 1 and of (s, t) in step 5 (a miss here would change
+// bytes; a spare cell only costs its drawing).
+bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  constexpr float kReachTexels = 1.5f;
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+  const float cell = static_cast<float>(view.size) / LightView::kFineCells;
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - kReachTexels) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - kReachTexels) / cell)));
+  const int x1 = std::min(LightView::kFineCells - 1,
+                          static_cast<int>(std::floor((high.x + kReachTexels) / cell)));
+  const int y1 = std::min(LightView::kFineCells - 1,
+                          static_cast<int>(std::floor((high.y + kReachTexels) / cell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (view.covered[static_cast<std::size_t>(y * LightView::kFineCells + x)]) return true;
+    }
+  }
+  return false;
+}
+
 float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
                    ShadowAlpha mode) {
   float alpha = light.shadow_strength * 255.0f;
@@ -141,6 +171,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
           triangle.v[k] = receiver.screen[index[k]];
           set_texture_fields(triangle.v[k], view, light, receiver.world[index[k]], options);
         }
+        const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
+        triangle.reaches_caster = reaches_covered_cell(view, corners, 3);
         coords.triangles.push_back(triangle);
         continue;
       }
