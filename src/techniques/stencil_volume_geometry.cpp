@@ -115,7 +115,9 @@ bool is_closed_surface(const Mesh &mesh) {
   // high, and build_edge_mesh's balance (walks up minus walks down) summed per edge.
   std::vector<std::size_t> first(positions.size() + 1, 0);
   for (const glm::uvec3 &t : triangles) {
-    ++first[std::min(t.x, t.y) + 1], ++first[std::min(t.y, t.z) + 1], ++first[std::min(t.z, t.x) + 1];
+    ++first[std::min(t.x, t.y) + 1];
+    ++first[std::min(t.y, t.z) + 1];
+    ++first[std::min(t.z, t.x) + 1];
   }
   for (std::size_t v = 0; v < positions.size(); ++v) first[v + 1] += first[v];
   std::vector<std::uint64_t> walks(first.back());
