@@ -23,10 +23,10 @@ ShimVertex lerp(const ShimVertex &a, const ShimVertex &b, float t) {
           mix(a.tow, b.tow), mix(a.q, b.q), mix(a.fog, b.fog)};
 }
 
-// Keeps the part of `polygon` where sign * (coordinate - bound) >= 0.
-std::vector<ShimVertex> clip_edge(const std::vector<ShimVertex> &polygon, bool use_x, float bound,
-                                  float sign) {
-  std::vector<ShimVertex> out;
+// Keeps in `out` the part of `polygon` where sign * (coordinate - bound) >= 0.
+void clip_edge(const std::vector<ShimVertex> &polygon, bool use_x, float bound, float sign,
+               std::vector<ShimVertex> &out) {
+  out.clear();
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
     const ShimVertex &p = polygon[i];
@@ -36,24 +36,31 @@ std::vector<ShimVertex> clip_edge(const std::vector<ShimVertex> &polygon, bool u
     if (dp >= 0.0f) out.push_back(p);
     if ((dp >= 0.0f) != (dq >= 0.0f)) out.push_back(lerp(p, q, dp / (dp - dq)));
   }
-  return out;
+}
+
+// Whether every vertex (screen pixels) lies inside the clip window.
+bool inside_clip_window(const GlideContext &ctx, const ShimVertex *vertices, std::size_t count) {
+  const auto &clip = ctx.raster.clip;
+  const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
+  const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
+  bool inside = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    const ShimVertex &v = vertices[i];
+    inside = inside && v.x >= min_x && v.x < max_x && v.y >= min_y && v.y < max_y;
+  }
+  return inside;
 }
 
 // Clips a convex polygon (screen pixels) to the clip window unless it lies inside, then
 // draws it as a fan from its first vertex; returns the polygon drawn.
 std::vector<ShimVertex> clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVertex> polygon) {
-  const auto &clip = ctx.raster.clip;
-  const float min_x = static_cast<float>(clip.min_x), max_x = static_cast<float>(clip.max_x);
-  const float min_y = static_cast<float>(clip.min_y), max_y = static_cast<float>(clip.max_y);
-  bool inside = true;
-  for (const ShimVertex &v : polygon) {
-    inside = inside && v.x >= min_x && v.x < max_x && v.y >= min_y && v.y < max_y;
-  }
-  if (!inside) {
-    polygon = clip_edge(polygon, true, max_x, -1.0f);
-    polygon = clip_edge(polygon, false, max_y, -1.0f);
-    polygon = clip_edge(polygon, true, min_x, 1.0f);
-    polygon = clip_edge(polygon, false, min_y, 1.0f);
+  if (!inside_clip_window(ctx, polygon.data(), polygon.size())) {
+    const auto &clip = ctx.raster.clip;
+    std::vector<ShimVertex> clipped;
+    clip_edge(polygon, true, static_cast<float>(clip.max_x), -1.0f, clipped);
+    clip_edge(clipped, false, static_cast<float>(clip.max_y), -1.0f, polygon);
+    clip_edge(polygon, true, static_cast<float>(clip.min_x), 1.0f, clipped);
+    clip_edge(clipped, false, static_cast<float>(clip.min_y), 1.0f, polygon);
     for (ShimVertex &v : polygon) v.x = snap(v.x), v.y = snap(v.y);
   }
   for (std::size_t i = 2; i < polygon.size(); ++i) {
@@ -78,15 +85,20 @@ void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex
     return;
   }
   const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
-  std::vector<ShimVertex> polygon(3);
+  ShimVertex triangle[3];
   const GrVertex *in[3] = {a, b, c};
   for (int i = 0; i < 3; ++i) {
-    if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], polygon[static_cast<std::size_t>(i)],
-                                    "guDrawTriangleWithClip", glide_shim::kMaxClippedCoordinate)) {
+    if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], triangle[i], "guDrawTriangleWithClip",
+                                    glide_shim::kMaxClippedCoordinate)) {
       return;
     }
   }
-  glide_shim::clip_and_draw_fan(ctx, std::move(polygon));
+  // Inside the window (most triangles): what clip_and_draw_fan would queue, without its vector.
+  if (glide_shim::inside_clip_window(ctx, triangle, 3)) {
+    glide_shim::queue_triangle(ctx, triangle[0], triangle[1], triangle[2]);
+    return;
+  }
+  glide_shim::clip_and_draw_fan(ctx, std::vector<ShimVertex>(triangle, triangle + 3));
 }
 
 void guDrawPolygonVertexListWithClip(int nverts, const GrVertex vlist[]) {

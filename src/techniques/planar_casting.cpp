@@ -118,7 +118,7 @@ Caster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &li
   // A closed caster's light-facing triangles cover its whole shadow, so the others are culled
   // (the article's "lightface-culled"). An open one (a tube, a sheet) may show the light only
   // its back faces: those cast too, turned to face the light.
-  const bool closed = build_edge_mesh(mesh).closed;
+  const bool closed = is_closed_surface(mesh);
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 &a = lit.world[t.x], &b = lit.world[t.y], &c = lit.world[t.z];
     const bool facing = faces(light.position, a, b, c);

@@ -62,7 +62,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
   // sheet) may show the light only its back, so it is drawn from both sides.
-  grCullMode(build_edge_mesh(caster_mesh(object)).closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
+  grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
   grBufferClear(0, 0, 0);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);

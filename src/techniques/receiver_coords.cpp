@@ -14,9 +14,10 @@
 namespace gs {
 namespace {
 
-// (s, t) numerators and divisor of a world point for step 5, in Glide texture units.
-glm::vec3 shadow_stq(const LightView &view, const glm::vec3 &world) {
-  const glm::vec4 clip = view.projection * view.view * glm::vec4(world, 1.0f);
+// (s, t) numerators and divisor of a world point for step 5, in Glide texture units;
+// `light_clip` is view.projection * view.view, made once per receiver pass.
+glm::vec3 shadow_stq(const glm::mat4 &light_clip, const glm::vec3 &world) {
+  const glm::vec4 clip = light_clip * glm::vec4(world, 1.0f);
   return {(0.5f * clip.x + 0.5f * clip.w) * 256.0f, (0.5f * clip.w - 0.5f * clip.y) * 256.0f,
           clip.w};
 }
@@ -91,9 +92,10 @@ float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec
 }
 
 // Fills the texture fields of a camera-screen vertex for the world point it stands for.
-void set_texture_fields(GrVertex &v, const LightView &view, const SpotLight &light,
-                        const glm::vec3 &world, const ProjectedShadowOptions &options) {
-  const glm::vec3 stq = shadow_stq(view, world);
+void set_texture_fields(GrVertex &v, const LightView &view, const glm::mat4 &light_clip,
+                        const SpotLight &light, const glm::vec3 &world,
+                        const ProjectedShadowOptions &options) {
+  const glm::vec3 stq = shadow_stq(light_clip, world);
   if (options.projective) {
     // The hardware divides per pixel by tmuvtx[0].oow (GR_STWHINT_W_DIFF_TMU0).
     v.tmuvtx[0].sow = stq.x * v.oow;
@@ -169,7 +171,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         const unsigned index[3] = {t.x, t.y, t.z};
         for (int k = 0; k < 3; ++k) {
           triangle.v[k] = receiver.screen[index[k]];
-          set_texture_fields(triangle.v[k], view, light, receiver.world[index[k]], options);
+          set_texture_fields(triangle.v[k], view, light_clip, light, receiver.world[index[k]],
+                             options);
         }
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         triangle.reaches_caster = reaches_covered_cell(view, corners, 3);
@@ -202,7 +205,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         std::vector<GrVertex> screen;
         project_camera_polygon(frame, scene, part, scratch, screen);
         for (std::size_t i = 0; i < screen.size(); ++i) {
-          set_texture_fields(screen[i], view, light, part[i].world, options);
+          set_texture_fields(screen[i], view, light_clip, light, part[i].world, options);
         }
         if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
       }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -40,13 +41,16 @@ bool may_touch_volume(const glm::vec3 &light, const Sphere &caster, const Sphere
   return angle <= cone + spread + 1e-4f;  // a margin for the rounding of acos near the edge
 }
 
-}  // namespace
-
-EdgeMesh build_edge_mesh(const Mesh &mesh) {
-  EdgeMesh result;
+// Welds `mesh` by exactly equal positions into `positions` (each distinct one once) and
+// `triangles` (corners among them), leaving out triangles with two corners welded together or
+// three on one line: they have no area, bound nothing, and their edges would make a closed
+// surface look open. False, with both empty, for a non-finite position or an index out of range.
+bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::uvec3> &triangles) {
+  positions.clear();
+  triangles.clear();
   const std::size_t n = mesh.positions.size();
   for (const glm::vec3 &p : mesh.positions) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return result;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
   }
   std::vector<glm::uint> order(n);
   std::iota(order.begin(), order.end(), 0u);
@@ -56,23 +60,33 @@ EdgeMesh build_edge_mesh(const Mesh &mesh) {
   });
   std::vector<glm::uint> welded(n);
   for (glm::uint i : order) {
-    if (result.positions.empty() || result.positions.back() != mesh.positions[i]) {
-      result.positions.push_back(mesh.positions[i]);
+    if (positions.empty() || positions.back() != mesh.positions[i]) {
+      positions.push_back(mesh.positions[i]);
     }
-    welded[i] = static_cast<glm::uint>(result.positions.size() - 1);
+    welded[i] = static_cast<glm::uint>(positions.size() - 1);
   }
   for (const glm::uvec3 &t : mesh.triangles) {
-    if (t.x >= n || t.y >= n || t.z >= n) return EdgeMesh{};
+    if (t.x >= n || t.y >= n || t.z >= n) {
+      positions.clear();
+      triangles.clear();
+      return false;
+    }
     const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
-    // Two corners welded together: no area, and its edges (a->a, a->b, b->a) cancel out.
     if (w.x == w.y || w.y == w.z || w.z == w.x) continue;
-    // Three distinct corners on one line: no area either, so it bounds nothing; its edges
-    // (a->m, m->b, b->a) would otherwise make a closed surface look open.
-    const glm::vec3 &a = result.positions[w.x], &b = result.positions[w.y],
-                    &c = result.positions[w.z];
+    const glm::vec3 &a = positions[w.x], &b = positions[w.y], &c = positions[w.z];
     if (glm::cross(b - a, c - a) == glm::vec3(0.0f)) continue;
-    const auto index = static_cast<glm::uint>(result.triangles.size());
-    result.triangles.push_back(w);
+    triangles.push_back(w);
+  }
+  return true;
+}
+
+}  // namespace
+
+EdgeMesh build_edge_mesh(const Mesh &mesh) {
+  EdgeMesh result;
+  if (!weld(mesh, result.positions, result.triangles)) return result;
+  for (glm::uint index = 0; index < result.triangles.size(); ++index) {
+    const glm::uvec3 &w = result.triangles[index];
     for (const glm::uvec3 &edge : {glm::uvec3(w.x, w.y, index), glm::uvec3(w.y, w.z, index),
                                    glm::uvec3(w.z, w.x, index)}) {
       result.edges.push_back(edge);
@@ -90,6 +104,42 @@ EdgeMesh build_edge_mesh(const Mesh &mesh) {
     if (balance != 0) result.closed = false;
   }
   return result;
+}
+
+bool is_closed_surface(const Mesh &mesh) {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::uvec3> triangles;
+  if (!weld(mesh, positions, triangles)) return false;
+  // Every walk of an undirected edge {low, high} filed under its low corner (a counting sort),
+  // as high << 1 plus 1 when it goes low -> high; each corner's few walks are then sorted by
+  // high, and build_edge_mesh's balance (walks up minus walks down) summed per edge.
+  std::vector<std::size_t> first(positions.size() + 1, 0);
+  for (const glm::uvec3 &t : triangles) {
+    ++first[std::min(t.x, t.y) + 1];
+    ++first[std::min(t.y, t.z) + 1];
+    ++first[std::min(t.z, t.x) + 1];
+  }
+  for (std::size_t v = 0; v < positions.size(); ++v) first[v + 1] += first[v];
+  std::vector<std::uint64_t> walks(first.back());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for (const glm::uvec3 &t : triangles) {
+    for (const auto &[from, to] : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      const std::uint64_t high = std::max(from, to);
+      walks[next[std::min(from, to)]++] = high << 1 | (from < to ? 1u : 0u);
+    }
+  }
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const auto begin = walks.begin() + static_cast<std::ptrdiff_t>(first[v]);
+    const auto end = walks.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
+    std::sort(begin, end);
+    for (auto run = begin; run != end;) {
+      int balance = 0;
+      const std::uint64_t high = *run >> 1;
+      for (; run != end && *run >> 1 == high; ++run) balance += (*run & 1u) != 0 ? 1 : -1;
+      if (balance != 0) return false;
+    }
+  }
+  return true;
 }
 
 std::vector<bool> light_facing(const EdgeMesh &mesh, const std::vector<glm::vec3> &world,

@@ -30,6 +30,9 @@ struct EdgeMesh {
 // Welds `mesh` (exactly equal positions) and builds its edges; not closed for an open surface,
 // a non-finite position or an index out of range.
 EdgeMesh build_edge_mesh(const Mesh &mesh);
+// build_edge_mesh(mesh).closed without building the edges (cheaper: the projected and planar
+// techniques ask it of every caster every frame, and a fighter's mesh is new every frame).
+bool is_closed_surface(const Mesh &mesh);
 
 // Per triangle of `mesh`: whether it faces the point light at `light` (world), with `world` the
 // mesh's positions in world space (one per EdgeMesh position).

@@ -98,6 +98,43 @@ TEST(StencilVolumeSilhouette, ClosedAndOpenMeshesAreTold) {
   }
 }
 
+// is_closed_surface is build_edge_mesh's `closed` without the edges: the same answer on closed,
+// open, degenerate, broken and empty meshes, including a box missing one face and a mesh whose
+// only open edge is walked twice the same way.
+TEST(StencilVolumeSilhouette, ClosedSurfaceTestAgreesWithTheEdgeMesh) {
+  std::vector<gs::Mesh> meshes = {gs::make_box(glm::vec3(0.5f)), gs::make_sphere(1.0f, 9, 5),
+                                  gs::make_cylinder(0.5f, 2.0f, 10, true),
+                                  gs::make_cylinder(0.5f, 2.0f, 10, false),
+                                  gs::make_plane(2.0f, 3), gs::Mesh{}};
+  gs::Mesh no_lid = gs::make_box(glm::vec3(1.0f));
+  no_lid.triangles.pop_back();
+  no_lid.triangles.pop_back();
+  gs::Mesh twice_one_way = gs::make_box(glm::vec3(1.0f));
+  twice_one_way.triangles.push_back(twice_one_way.triangles.front());
+  gs::Mesh not_finite = gs::make_box(glm::vec3(1.0f));
+  not_finite.positions[3].y = INFINITY;
+  gs::Mesh out_of_range = gs::make_box(glm::vec3(1.0f));
+  out_of_range.triangles.back().z = 1000;
+  gs::Mesh flat_corner = gs::make_box(glm::vec3(1.0f));
+  flat_corner.positions.push_back(flat_corner.positions[0]);
+  flat_corner.triangles.push_back({0, 0, static_cast<glm::uint>(flat_corner.positions.size() - 1)});
+  for (gs::Mesh *m : {&no_lid, &twice_one_way, &not_finite, &out_of_range, &flat_corner}) {
+    meshes.push_back(*m);
+  }
+  gs::FightScene fight(TechniqueTest::kWidth, TechniqueTest::kHeight, 128);
+  for (float time : {0.0f, 1.3f, 4.4f}) {
+    for (const gs::SceneObject &o : fight.at(time).objects) meshes.push_back(o.mesh);
+  }
+  int closed = 0;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const bool expected = gs::build_edge_mesh(meshes[i]).closed;
+    EXPECT_EQ(gs::is_closed_surface(meshes[i]), expected) << "mesh " << i;
+    closed += expected;
+  }
+  EXPECT_GT(closed, 0);
+  EXPECT_LT(closed, static_cast<int>(meshes.size()));
+}
+
 TEST_F(StencilVolumeShadowTest, FootprintOnTheFloorMatchesTheProjectedTexture) {
   const gs::Scene scene = box_over_floor();
   EXPECT_FALSE(gs::near_plane_may_be_in_shadow(scene, scene.lights[0]));

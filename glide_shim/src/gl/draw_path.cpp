@@ -188,10 +188,12 @@ void GlRenderer::flush() {
   if (queue_.empty()) return;
   const GlFunctions &gl = backend_->gl;
   PipelineKey key = pipeline_key(context_, context_.fast_paths);
-  if (key.sources && programs_.count(key.defines()) == 0 && ++states_seen_[key.defines()] < 2) {
+  std::string name = key.defines();  // the program cache's key, made once per flush
+  if (key.sources && programs_.count(name) == 0 && ++states_seen_[name] < 2) {
     key = key.without_sources();  // compiled in once the state is drawn again
+    name = key.defines();
   }
-  const ShaderProgram *program = program_for(key);
+  const ShaderProgram *program = program_for(key, name);
   if (program == nullptr) {
     queue_.clear();
     return;

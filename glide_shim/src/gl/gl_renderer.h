@@ -82,6 +82,8 @@ class GlRenderer {
   GlRenderer(GlideContext &context, std::unique_ptr<Backend> backend, int width, int height);
   bool build_framebuffer(std::string &error);
   const ShaderProgram *program_for(const PipelineKey &key);
+  // The same, with the key's defines() (its cache name) already made: flush makes it once.
+  const ShaderProgram *program_for(const PipelineKey &key, const std::string &name);
   void apply_fixed_function_state();
   void set_fog_uniforms(const ShaderProgram &program);
   void use_program(const ShaderProgram *program, const PipelineKey &key);

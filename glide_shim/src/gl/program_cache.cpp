@@ -32,7 +32,10 @@ unsigned compile(const GlFunctions &gl, GLenum stage, const std::string &source,
 using namespace gl_internal;
 
 const ShaderProgram *GlRenderer::program_for(const PipelineKey &key) {
-  const std::string name = key.defines();
+  return program_for(key, key.defines());
+}
+
+const ShaderProgram *GlRenderer::program_for(const PipelineKey &key, const std::string &name) {
   auto found = programs_.find(name);
   if (found != programs_.end()) return &found->second;
 

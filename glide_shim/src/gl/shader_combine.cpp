@@ -47,7 +47,7 @@ bool has_product(GrCombineFunction_t function) {
 std::string combine_code(const std::string &result, const UnitShape &unit, bool rgb, bool fbi,
                          const std::string &local, const std::string &other,
                          const std::string &local_alpha, const std::string &other_alpha,
-                         const std::string &invert, bool plain) {
+                         const std::string &invert, bool plain, bool fast) {
   const std::string type = rgb ? "vec3" : "float";
   const std::string zero = type + "(0.0)";
   const std::string widened_local_alpha = rgb ? "vec3(" + local_alpha + ")" : local_alpha;
@@ -76,6 +76,11 @@ std::string combine_code(const std::string &result, const UnitShape &unit, bool 
     s << "clamp((" << minuend << " - " << subtrahend << ") * "
       << factor_code(unit.factor, rgb, fbi, local, local_alpha, other_alpha) << " / 255.0 + "
       << add << ", 0.0, 255.0);\n";
+  } else if (has_product(unit.function) && fast && unit.factor == GR_COMBINE_FACTOR_ZERO &&
+             subtrahend == zero) {
+    // floor(other * 1 / 256) is 0 for every source value 0..255: only the added term is left
+    // (and the sources of the product need not be computed, e.g. a texture's colour).
+    s << "clamp(" << add << ", 0.0, 255.0);  // factor ZERO: the product is 0\n";
   } else if (has_product(unit.function)) {
     s << "clamp(floor((" << minuend << " - " << subtrahend << ") * ("
       << factor_code(unit.factor, rgb, fbi, local, local_alpha, other_alpha)

@@ -87,9 +87,11 @@ std::string fragment_shader_source(const PipelineKey &key) {
          "  vec4 texel = sample_tmu(tex_lod);\n"
       << lod_factor_code(key)
       << combine_code("tmu_rgb", key.tmu_rgb, true, false, "texel.rgb", "vec3(0.0)", "texel.a",
-                      "0.0", !key.sources ? "u_tmu_invert.x" : key.tmu_rgb_invert ? "!" : "", plain_combine)
+                      "0.0", !key.sources ? "u_tmu_invert.x" : key.tmu_rgb_invert ? "!" : "",
+                      plain_combine, key.fast)
       << combine_code("tmu_a", key.tmu_alpha, false, false, "texel.a", "0.0", "texel.a", "0.0",
-                      !key.sources ? "u_tmu_invert.y" : key.tmu_alpha_invert ? "!" : "", plain_combine)
+                      !key.sources ? "u_tmu_invert.y" : key.tmu_alpha_invert ? "!" : "",
+                      plain_combine, key.fast)
       << "  vec4 tex = vec4(tmu_rgb, tmu_a);\n";
   } else {
     s << "  vec4 tex = vec4(0.0);\n";
@@ -116,13 +118,15 @@ std::string fragment_shader_source(const PipelineKey &key) {
     s << "  if (all(equal(c_other, u_chroma.rgb))) discard;  // exact match on 'other'\n";
   }
   s << combine_code("rgb", key.color, true, true, "c_local", "c_other", "a_local", "a_other",
-                    !key.sources ? "u_color_select.y" : key.color_invert ? "!" : "", plain_combine);
+                    !key.sources ? "u_color_select.y" : key.color_invert ? "!" : "", plain_combine,
+                    key.fast);
   // The alpha combine's result reaches the pixel only through the alpha test and blending: a
   // 565 buffer has no alpha planes. The fast paths leave it out when neither is on.
   const bool alpha_seen = !key.fast || key.blending || key.alpha_test != GR_CMP_ALWAYS;
   if (alpha_seen) {
     s << combine_code("alpha", key.alpha, false, true, "a_local", "a_other", "a_local", "a_other",
-                      !key.sources ? "u_alpha_select.y" : key.alpha_invert ? "!" : "", plain_combine);
+                      !key.sources ? "u_alpha_select.y" : key.alpha_invert ? "!" : "",
+                      plain_combine, key.fast);
   } else {
     s << "  float alpha = 255.0;  // not observable: no alpha test, no blending\n";
   }

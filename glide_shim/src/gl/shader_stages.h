@@ -16,12 +16,14 @@ std::string tmu_sample_code(const PipelineKey &key);
 std::string lod_factor_code(const PipelineKey &key);
 std::string fetch_code(bool texel_fetch);
 
-// The combine units; has_product: the function multiplies by its factor.
+// The combine units; has_product: the function multiplies by its factor. `fast` (the fast
+// paths) leaves out a product that is always 0: (other * (0 + 1)) >> 8 with factor ZERO and
+// nothing subtracted, since every source is 0..255.
 bool has_product(GrCombineFunction_t function);
 std::string combine_code(const std::string &result, const UnitShape &unit, bool rgb, bool fbi,
                          const std::string &local, const std::string &other,
                          const std::string &local_alpha, const std::string &other_alpha,
-                         const std::string &invert, bool plain = false);
+                         const std::string &invert, bool plain = false, bool fast = false);
 const char *fast_local(int local, bool rgb);
 const char *fast_other(int other, bool rgb);
 
