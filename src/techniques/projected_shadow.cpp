@@ -5,6 +5,7 @@
 // for the light's size x size view in step 1 and the camera in steps 4-5.
 #include "techniques/projected_shadow.h"
 
+#include "techniques/pierced_receivers.h"
 #include "techniques/stencil_volume_shadow.h"
 
 #include <glide_shim.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -30,6 +32,26 @@ GrLOD_t lod_for(int size) {
 using Clock = std::chrono::steady_clock;
 double elapsed_ms(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The refusal of a shadow whose texels are too coarse for the screen, naming the light, the
+// caster, the receiver, the footprint, the largest accepted and the smallest size that would be
+// accepted (the footprint halves as the size doubles).
+std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver, float footprint, float largest, int size) {
+  int accepted = size;
+  while (accepted <= 512 && footprint * static_cast<float>(size) / static_cast<float>(accepted) > largest) {
+    accepted *= 2;
+  }
+  char pixels[64];
+  std::snprintf(pixels, sizeof pixels, "%.1f screen pixels (the largest accepted is %.1f)",
+                static_cast<double>(footprint), static_cast<double>(largest));
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
+         "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
+         "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
+         (accepted <= 512 ? "size " + std::to_string(accepted) + " would be accepted"
+                          : std::string("no size up to 512 would be accepted")) +
+         "); it casts no shadow from this light";
 }
 
 }  // namespace
@@ -283,6 +305,11 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   FrameGeometry frame = project_scene(scene);
   grRenderBuffer(GR_BUFFER_BACKBUFFER);
   FxU32 next_address = grTexMinAddress(GR_TMU0);
+  const bool point_sampled = options.chroma_key || !options.bilinear;
+  const float largest_footprint =
+      options.largest_texel_footprint_px > 0.0f ? options.largest_texel_footprint_px
+      : point_sampled                           ? kLargestPointSampledFootprintPx
+                                                : kLargestTexelFootprintPx;
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
     if (scene.lights[light].is_projector()) continue;  // slides cast no shadows
     for (std::size_t caster = 0; caster < scene.objects.size(); ++caster) {
@@ -294,43 +321,85 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         if (!fitted.outside_beam) result.errors.push_back(fitted.problem);
         continue;
       }
-      for (LightView &part : split_into_textures(fitted)) {
-        // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
-        GrTexInfo needed{lod_for(part.size), lod_for(part.size), GR_ASPECT_1x1,
-                         GR_TEXFMT_ARGB_4444, nullptr};
-        if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
-            grTexMaxAddress(GR_TMU0) + 8) {
-          result.errors.push_back("TMU memory is full: '" + scene.objects[caster].name +
-                                  "' casts no shadow from light " + std::to_string(light));
-          break;
+      // This caster's textures (a map above 256 is several, and one more per planar receiver it
+      // reaches through); kept only if every one's texels are fine enough for the screen where
+      // the shadow falls.
+      std::vector<ShadowJob> caster_jobs;
+      const FxU32 caster_address = next_address;
+      // The caster's textures for the receivers marked in `receivers`, clipped to the light's
+      // side of `receiver_plane` (world) when there is one.
+      auto cast = [&](const std::vector<bool> &receivers, const glm::vec4 *receiver_plane) {
+        for (LightView &part : split_into_textures(fitted)) {
+          // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
+          GrTexInfo needed{lod_for(part.size), lod_for(part.size), GR_ASPECT_1x1,
+                           GR_TEXFMT_ARGB_4444, nullptr};
+          if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
+              grTexMaxAddress(GR_TMU0) + 8) {
+            result.errors.push_back("TMU memory is full: '" + scene.objects[caster].name +
+                                    "' casts no shadow from light " + std::to_string(light));
+            return;
+          }
+          ShadowJob job;
+          job.caster = caster;
+          job.light = light;
+          job.view = part;
+          if (receiver_plane) {
+            // A world plane as a light-view plane: the inverse transpose of the view matrix.
+            job.view.caster_planes.push_back(glm::transpose(glm::inverse(part.view)) * *receiver_plane);
+          }
+          auto step_start = Clock::now();
+          render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
+          finish_step(0, step_start);
+          if (!job.view.usable) {
+            result.errors.push_back(job.view.problem);
+            continue;
+          }
+          if (!job.view.note.empty() &&
+              std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
+                  result.warnings.end()) {
+            result.warnings.push_back(job.view.note);
+          }
+          step_start = Clock::now();
+          job.texture = make_shadow_texture(job.view, options, next_address);  // 2
+          finish_step(1, step_start);
+          GrTexInfo info = job.texture.info;
+          next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
+          step_start = Clock::now();
+          job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
+                                                  job.view, options, &receivers);  // 3
+          finish_step(2, step_start);
+          caster_jobs.push_back(std::move(job));
         }
-        ShadowJob job;
-        job.caster = caster;
-        job.light = light;
-        job.view = part;
-        start = Clock::now();
-        render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
-        finish_step(0, start);
-        if (!job.view.usable) {
-          result.errors.push_back(job.view.problem);
-          continue;
-        }
-        if (!job.view.note.empty() &&
-            std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
-                result.warnings.end()) {
-          result.warnings.push_back(job.view.note);
-        }
-        start = Clock::now();
-        job.texture = make_shadow_texture(job.view, options, next_address);  // 2
-        finish_step(1, start);
-        GrTexInfo info = job.texture.info;
-        next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
-        start = Clock::now();
-        job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                job.view, options);  // 3
-        finish_step(2, start);
-        result.jobs.push_back(std::move(job));
+      };
+      start = Clock::now();
+      const std::vector<PiercedReceiver> pierced =
+          pierced_planar_receivers(scene, frame, caster, scene.lights[light].position);
+      result.times.ms[0] += elapsed_ms(start);
+      std::vector<bool> receivers(scene.objects.size(), true);
+      for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
+      cast(receivers, nullptr);
+      for (const PiercedReceiver &p : pierced) {
+        if (!p.casts) continue;  // nothing of the caster on the light's side: no shadow on it
+        std::vector<bool> only(scene.objects.size(), false);
+        only[p.receiver] = true;
+        cast(only, &p.plane);
       }
+      std::vector<FootprintSample> samples;
+      for (const ShadowJob &job : caster_jobs) {
+        samples.insert(samples.end(), job.receivers.footprints.begin(), job.receivers.footprints.end());
+      }
+      const FootprintSample coarsest = shadow_footprint(
+          std::move(samples),
+          kFootprintIgnoredScreenShare * static_cast<float>(scene.width) * static_cast<float>(scene.height));
+      result.texel_footprint_px = std::max(result.texel_footprint_px, coarsest.pixels_per_texel);
+      if (coarsest.pixels_per_texel > largest_footprint) {
+        result.errors.push_back(texel_footprint_error(scene, light, caster, coarsest.receiver,
+                                                      coarsest.pixels_per_texel, largest_footprint,
+                                                      fitted.size));
+        next_address = caster_address;  // its textures are not used
+        continue;
+      }
+      for (ShadowJob &job : caster_jobs) result.jobs.push_back(std::move(job));
     }
   }
   auto start = Clock::now();

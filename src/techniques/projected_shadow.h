@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
+#include "techniques/texel_footprint.h"
 
 #include <glide.h>
 
@@ -31,6 +32,10 @@ struct ProjectedShadowOptions {
   bool projective = true;      // per-pixel s/q (W_DIFF_TMU0); false: the article's per-vertex s
   ShadowAlpha alpha = ShadowAlpha::Constant;
   int border_texels = 2;       // clean border the light's view keeps around the caster
+  // A shadow whose texels span more screen pixels than this on a receiver it falls on is
+  // refused (a per-frame error, nothing cast): its edge would stray more than a pixel from the
+  // true one. 0: the measured default for the filter (texel_footprint.h); infinity: no check.
+  float largest_texel_footprint_px = 0.0f;
 };
 
 // The light's view of one caster (step 1's camera). Fitted to the caster's bounding sphere when
@@ -93,6 +98,9 @@ struct ShadowTriangle {
 struct ReceiverCoords {
   std::vector<ShadowTriangle> triangles;      // unclipped: the step-4 screen vertices
   std::vector<std::vector<GrVertex>> clipped;  // clipped by the caster's front plane or camera
+  // Per receiver polygon the shadow can fall on: how many screen pixels a texel spans there,
+  // and over how many pixels (texel_footprint.h).
+  std::vector<FootprintSample> footprints;
 };
 
 struct StepTimes {
@@ -127,9 +135,11 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
 // Step 3. Every receiver but the caster in the light's space: Listing 2's flags (facing the
 // light, not wholly outside its view), clipped where it is nearer the light than the caster, and
 // (s, t) from the light-space x, y in Glide's 0..256 units.
+// `receivers`, when given, marks (per scene object) the receivers this texture is for.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
-                                       const LightView &view, const ProjectedShadowOptions &options);
+                                       const LightView &view, const ProjectedShadowOptions &options,
+                                       const std::vector<bool> *receivers = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended
@@ -144,6 +154,9 @@ struct ShadowFrame {
   std::vector<ShadowJob> jobs;        // one per caster and light that got a shadow
   std::vector<std::string> warnings;  // what the user should know, `errors` included
   std::vector<std::string> errors;    // casters left without a shadow they should cast, and why
+  // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
+  // every caster and light, cast or refused: what largest_texel_footprint_px bounds.
+  float texel_footprint_px = 0.0f;
 };
 
 // The whole frame in the article's order, into the back buffer. With `synchronous`, each step
