@@ -1,8 +1,8 @@
-// Hubert Nguyen's projected shadow texture (Game Developer, 1999), written against Glide as the
-// article's five steps: render the caster flat from the light; make an ARGB_4444 texture of it;
-// compute (s, t) for the receivers; render the scene; render the flagged triangles again with
-// the texture. One texture per caster and light; the caster never receives its own shadow, and
-// no shadow falls outside the light's beam (step 3 clips receivers to it, light_beam.h).
+// Hubert Nguyen's projected shadow texture (Game Developer, 1999) in Glide, as the article's five
+// steps: the caster flat from the light; an ARGB_4444 texture of it; (s, t) for the receivers; the
+// scene; the flagged triangles again with the texture. A texture per caster and light (one more
+// per planar receiver it reaches through: pierced_receivers.h), no shadow on the caster itself or
+// beyond the beam (light_beam.h), and none from a texture too coarse (texel_footprint.h).
 #pragma once
 
 #include "scene/scene.h"
@@ -123,6 +123,12 @@ struct ShadowJob {
 // the caster is an open mesh; only its part inside LightView::caster_planes) in a
 // size x size region: the back buffer's top-left corner, or texture memory at
 // `texture_address` on the direct path.
+// The Glide LOD of a size x size shadow texture (size a power of two, 1..256).
+inline GrLOD_t shadow_lod(int size) {
+  GrLOD_t lod = GR_LOD_256;
+  for (int side = 256; side > size; side /= 2) ++lod;
+  return lod;
+}
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
                          const ProjectedShadowOptions &options);
 std::vector<LightView> split_into_textures(const LightView &view);
