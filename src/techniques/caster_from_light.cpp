@@ -1,6 +1,6 @@
 // Step 1 of the projected shadow texture: the caster drawn flat from the light (565 red 11110b on
-// 0) into the back buffer or texture memory, clipped to its view's caster planes, and the cover
-// of texture cells it touched (LightView::occupied, covered). Spaces: light view and light clip
+// 0) into the back buffer or texture memory, clipped to its view's caster planes, the cover of
+// texture cells it touched (LightView::occupied, covered) and the cells its silhouette crosses. Spaces: light view and light clip
 // in; Glide screen (pixels, y down) of the light's size x size view out.
 #include "techniques/projected_shadow.h"
 
@@ -10,8 +10,12 @@
 #include <glideutl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -97,6 +101,45 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
       }
     }
   };
+  // Marks the fine cells along a segment of the light's screen (texels) in view.silhouette.
+  auto trace = [&](const GrVertex &a, const GrVertex &b) {
+    const float cells = std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)) / fine_cell;
+    const int steps = std::min(4 * LightView::kFineCells, static_cast<int>(std::ceil(2.0f * cells)) + 1);
+    for (int k = 0; k <= steps; ++k) {
+      const float f = static_cast<float>(k) / static_cast<float>(steps);
+      const int x = fine_index(a.x + (b.x - a.x) * f), y = fine_index(a.y + (b.y - a.y) * f);
+      view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)] = true;
+    }
+  };
+  // The caster's silhouette from the light: edges (keyed by their ends' model positions, so
+  // vertices split for normals still join) between a triangle facing the light and one facing
+  // away, or on one triangle only (an open mesh's rim). Facing in light view space, where the
+  // light is at the origin.
+  std::map<std::array<float, 6>, std::pair<int, int>> edges;  // facing the light, triangles
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
+    const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
+    const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
+    for (const auto &end : ends) {
+      glm::vec3 p = mesh.positions[end[0]], q = mesh.positions[end[1]];
+      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q);
+      std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
+      edge.first += facing;
+      edge.second += 1;
+    }
+  }
+  std::map<std::array<float, 6>, unsigned> first_index;  // an end's vertex index, per position
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
+    for (const auto &end : ends) {
+      unsigned i = end[0], j = end[1];
+      glm::vec3 p = mesh.positions[i], q = mesh.positions[j];
+      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q), std::swap(i, j);
+      const std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
+      const bool silhouette = edge.second == 1 || (edge.first > 0 && edge.first < edge.second);
+      if (silhouette && inside[i] && inside[j]) trace(screen[i], screen[j]);
+    }
+  }
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
   std::vector<const GrVertex *> corners;
@@ -124,6 +167,8 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
       nearest = std::min(nearest, clip.w);
     }
     for (const GrVertex &v : fan) corners.push_back(&v);
+    // A clipped triangle's every edge may bound the shadow (the cut by a receiver's plane does).
+    for (std::size_t k = 0; k < fan.size(); ++k) trace(fan[k], fan[(k + 1) % fan.size()]);
     draw_fan(fan);
     occupy(corners.data(), corners.size(), nearest);
   }

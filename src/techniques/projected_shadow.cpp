@@ -258,7 +258,11 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       result.times.ms[0] += elapsed_ms(start);
       std::vector<bool> receivers(scene.objects.size(), true);
       for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
-      cast(receivers, nullptr);
+      bool others = false;  // a receiver left for the whole caster's texture
+      for (std::size_t r = 0; r < scene.objects.size(); ++r) {
+        others = others || (receivers[r] && r != caster && scene.objects[r].receives_shadow);
+      }
+      if (others) cast(receivers, nullptr);
       for (const PiercedReceiver &p : pierced) {
         if (!p.casts) continue;  // nothing of the caster on the light's side: no shadow on it
         std::vector<bool> only(scene.objects.size(), false);

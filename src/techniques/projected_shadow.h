@@ -78,6 +78,9 @@ struct LightView {
   // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
   static constexpr int kFineCells = 128;
   std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
+  // The fine cells the caster's silhouette from the light crosses (and the edges of its
+  // clipped triangles): where the shadow's edge can lie (texel_footprint.h).
+  std::vector<bool> silhouette = std::vector<bool>(kFineCells * kFineCells, false);
 };
 
 struct ShadowTexture {

@@ -126,34 +126,12 @@ FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
   return space;
 }
 
-// The fine cells (LightView::covered) where the shadow's edge can lie: covered cells with an
-// uncovered neighbour (or on the texture's border). Deep inside the shadow the texels' size
-// moves no edge: a camera inside a shadow sees coarse texels and no error.
-std::vector<bool> edge_cells(const LightView &view) {
-  constexpr int n = LightView::kFineCells;
-  std::vector<bool> edge(static_cast<std::size_t>(n * n), false);
-  auto covered = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < n && y < n && view.covered[static_cast<std::size_t>(y * n + x)];
-  };
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
-      if (!covered(x, y)) continue;
-      bool inside = true;
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) inside = inside && covered(x + dx, y + dy);
-      }
-      edge[static_cast<std::size_t>(y * n + x)] = !inside;
-    }
-  }
-  return edge;
-}
-
-// The world-space planes of the rectangle (in the texture) around the edge cells (edge_cells)
-// that a receiver polygon, given by its light clip coordinates (all with w > 0), can see: the
+// The world-space planes of the rectangle (in the texture) around the silhouette's cells
+// (LightView::silhouette: where the shadow's edge can lie; deep inside a shadow the texels' size
+// moves no edge, and a camera inside a shadow sees no error) that a receiver polygon, given by its light clip coordinates (all with w > 0), can see: the
 // cells within its texel box widened by bilinear filtering's reach, as reaches_covered_cell.
 // Outside that rectangle no shadow edge can fall on the polygon. False when there is none.
-bool edge_rectangle(const LightView &view, const std::vector<bool> &edges,
-                    const glm::vec4 *light_clip, std::size_t count,
+bool edge_rectangle(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
                     const glm::mat4 &world_to_light_clip, std::vector<glm::vec4> &planes) {
   constexpr float kReachTexels = 1.5f;
   glm::vec2 low(INFINITY), high(-INFINITY);
@@ -170,7 +148,7 @@ bool edge_rectangle(const LightView &view, const std::vector<bool> &edges,
   int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
   for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
     for (int x = index(low.x - kReachTexels); x <= index(high.x + kReachTexels); ++x) {
-      if (!edges[static_cast<std::size_t>(y * LightView::kFineCells + x)]) continue;
+      if (!view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)]) continue;
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   }
@@ -217,7 +195,6 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   }
   const LightBeam &beam = view.beam;
   const FootprintSpace footprint = footprint_space(scene, frame, view);
-  const std::vector<bool> edges = edge_cells(view);
   std::vector<ClipVertex> polygon, scratch, footprint_polygon;
   std::vector<glm::vec4> footprint_planes;
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
@@ -226,7 +203,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                const glm::vec3 *const *corners, const glm::vec4 *corners_clip,
                                std::size_t count) {
     footprint_planes = footprint.planes;
-    if (!edge_rectangle(view, edges, corners_clip, count, light_clip, footprint_planes)) return;
+    if (!edge_rectangle(view, corners_clip, count, light_clip, footprint_planes)) return;
     footprint_polygon.clear();
     for (std::size_t k = 0; k < count; ++k) {
       footprint_polygon.push_back({glm::vec4(*corners[k], 1.0f), *corners[k], {}});

@@ -1,9 +1,9 @@
-// How many screen pixels one texel of a projected shadow texture spans on a receiver: the
-// texture-to-screen mapping's largest stretch over the part of each receiver polygon where the
-// caster's shadow can fall, and the footprint of a whole shadow: the largest over all but a
-// sliver of the screen. The projected technique refuses a shadow whose texels are too coarse for
-// the screen (its edge would stray more than a pixel from the true one); the threshold and its
-// measurement are in docs/results.md ("Shadow texels against screen pixels").
+// How many screen pixels one texel of a projected shadow texture spans on a receiver, across
+// the direction the texel is stretched in, where the caster's shadow edge can fall on it (near
+// the caster's silhouette in the texture), and a whole shadow's footprint: the largest over all
+// but a sliver of the screen. The projected technique refuses a shadow whose texels are too
+// coarse (its edge would stray more than a pixel from the true one): docs/results.md ("Shadow
+// texels against screen pixels") has the threshold and its measurement.
 #pragma once
 
 #include "techniques/projection.h"
