@@ -137,7 +137,18 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
       if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q), std::swap(i, j);
       const std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
       const bool silhouette = edge.second == 1 || (edge.first > 0 && edge.first < edge.second);
-      if (silhouette && inside[i] && inside[j]) trace(screen[i], screen[j]);
+      if (!silhouette) continue;
+      // The part of the edge inside the caster planes (light view space, parametric clip).
+      float from = 0.0f, to = 1.0f;
+      for (const glm::vec4 &plane : view.caster_planes) {
+        const float di = glm::dot(plane, in_view[i]), dj = glm::dot(plane, in_view[j]);
+        if (di < 0.0f && dj < 0.0f) from = 1.0f, to = 0.0f;
+        else if (di < 0.0f) from = std::max(from, di / (di - dj));
+        else if (dj < 0.0f) to = std::min(to, di / (di - dj));
+      }
+      if (from >= to) continue;
+      trace(to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * from), view.size, view.size),
+            to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * to), view.size, view.size));
     }
   }
   std::vector<ClipVertex> polygon, scratch;
@@ -167,8 +178,17 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
       nearest = std::min(nearest, clip.w);
     }
     for (const GrVertex &v : fan) corners.push_back(&v);
-    // A clipped triangle's every edge may bound the shadow (the cut by a receiver's plane does).
-    for (std::size_t k = 0; k < fan.size(); ++k) trace(fan[k], fan[(k + 1) % fan.size()]);
+    // The cut by a pierced receiver's plane bounds the shadow on that receiver (the cuts by the
+    // view's border do not: the beam bounds the shadow there, step 3).
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const glm::vec4 &p = polygon[k].clip, &q = polygon[(k + 1) % polygon.size()].clip;
+      for (const glm::vec4 &plane : view.edge_planes) {
+        const float scale = 1e-4f * (glm::length(glm::vec3(p)) + glm::length(glm::vec3(q)));
+        if (std::abs(glm::dot(plane, p)) <= scale && std::abs(glm::dot(plane, q)) <= scale) {
+          trace(fan[k], fan[(k + 1) % fan.size()]);
+        }
+      }
+    }
     draw_fan(fan);
     occupy(corners.data(), corners.size(), nearest);
   }

@@ -226,7 +226,9 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           job.view = part;
           if (receiver_plane) {
             // A world plane as a light-view plane: the inverse transpose of the view matrix.
-            job.view.caster_planes.push_back(glm::transpose(glm::inverse(part.view)) * *receiver_plane);
+            const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * *receiver_plane;
+            job.view.caster_planes.push_back(plane);
+            job.view.edge_planes.push_back(plane);
           }
           auto step_start = Clock::now();
           render_caster_from_light(scene, caster, job.view, options, next_address);  // 1

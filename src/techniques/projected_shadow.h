@@ -62,6 +62,9 @@ struct LightView {
   // Light view space planes step 1 clips the caster to (a plane just in front of the light and
   // the view's square inside its clean border); empty when the whole caster is inside them.
   std::vector<glm::vec4> caster_planes;
+  // Those of caster_planes whose cut through the caster is an edge of its shadow (a pierced
+  // receiver's plane, pierced_receivers.h), light view space.
+  std::vector<glm::vec4> edge_planes;
   // The light's beam (light_beam.h): step 3 clips receivers to its lit regions, so step 5
   // darkens nothing the light does not reach.
   LightBeam beam;
@@ -78,8 +81,8 @@ struct LightView {
   // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
   static constexpr int kFineCells = 128;
   std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
-  // The fine cells the caster's silhouette from the light crosses (and the edges of its
-  // clipped triangles): where the shadow's edge can lie (texel_footprint.h).
+  // The fine cells the caster's silhouette from the light crosses (and its cut by edge_planes):
+  // where the shadow's edge can lie (texel_footprint.h).
   std::vector<bool> silhouette = std::vector<bool>(kFineCells * kFineCells, false);
 };
 

@@ -1,5 +1,6 @@
 // Step 3: the receivers' (s, t) from the light's view, and which receiver triangles can be in
-// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells). Spaces: world
+// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells), and how many
+// screen pixels a texel spans where its edge can fall (texel_footprint.h). Spaces: world
 // and light view / light clip in; camera Glide screen vertices (pixels, y down) out, with (s, t)
 // in Glide texture units (0..256 across the shadow texture) as sow, tow over their divisor.
 #include "techniques/projected_shadow.h"
@@ -128,9 +129,9 @@ FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
 
 // The world-space planes of the rectangle (in the texture) around the silhouette's cells
 // (LightView::silhouette: where the shadow's edge can lie; deep inside a shadow the texels' size
-// moves no edge, and a camera inside a shadow sees no error) that a receiver polygon, given by its light clip coordinates (all with w > 0), can see: the
-// cells within its texel box widened by bilinear filtering's reach, as reaches_covered_cell.
-// Outside that rectangle no shadow edge can fall on the polygon. False when there is none.
+// moves no edge) that a receiver polygon, given by its light clip coordinates (all w > 0), can
+// see: those within its texel box widened by bilinear filtering's reach, as in
+// reaches_covered_cell. Outside it no shadow edge falls on the polygon. False when none.
 bool edge_rectangle(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
                     const glm::mat4 &world_to_light_clip, std::vector<glm::vec4> &planes) {
   constexpr float kReachTexels = 1.5f;
