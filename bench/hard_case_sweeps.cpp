@@ -9,14 +9,17 @@
 //   screen size  1x1 .. 1024x768;
 //   acne         the depth map's bias on the scenes where acne and peter-panning show;
 //   classes      issue 14's scenes (wide casters near the light, shadows beyond the beam, scene
-//                flags, acne), every technique.
+//                flags, acne), every technique;
+//   footprint    the projected texture's texel footprint on screen against its interior error.
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
-//   hard_case_sweeps [classes|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
+//   hard_case_sweeps [classes|footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
 //   (default: all)
 #include "hard_case_scenes.h"
 
 #include "measure/speed_error.h"
+#include "scene/fight_scene.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -203,8 +206,81 @@ bool classes() {
         "light_facing_camera_posts"}) {
     columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
   }
-  return sweep("Classes of hard scenes (tests/hard_cases/README.md), every technique at its defaults",
+  if (!sweep("Classes of hard scenes (tests/hard_cases/README.md), every technique at its defaults",
+             "scene", columns, every_technique())) {
+    return false;
+  }
+  // The shadow texture too coarse for the screen, and casters through their receivers.
+  columns.clear();
+  for (const char *name :
+       {"crate_close_camera", "pole_low_sun", "table_high_light", "sign_on_wall", "bar_low_light",
+        "crate_toward_camera", "rail_toward_camera", "post_through_floor", "ball_sunk_in_floor",
+        "plank_through_wall", "crate_through_ramp"}) {
+    columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
+  }
+  return sweep("Classes of hard scenes, continued: coarse texels, casters through their receivers",
                "scene", columns, every_technique());
+}
+
+// The projected texture's texel footprint (texel_footprint.h) against its interior error: the
+// fight's three bench frames at 640x480, the sample scenes and the footprint class's scenes, at
+// every size, with the footprint check off so every configuration is measured. Each cell: the
+// footprint in screen pixels, then the interior error (false shadow + false light) in %.
+bool footprint() {
+  std::vector<gs::BenchFrame> frames;
+  gs::FightScene fight(640, 480, 256);
+  for (float time : {0.5f, 2.1f, 5.3f}) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fight t=%.1f", static_cast<double>(time));
+    frames.push_back({name, fight.at(time)});
+  }
+  for (const char *name : {"box_on_plane", "fighters", "obj_mesh", "receiver_between", "spotlight"}) {
+    frames.push_back({name, hard_cases::load(std::string("../../scenes/") + name + ".json")});
+  }
+  for (const char *name : {"box_over_floor", "dueling_frusta", "crate_close_camera",
+                           "pole_low_sun", "table_high_light", "sign_on_wall", "bar_low_light",
+                           "crate_toward_camera", "rail_toward_camera"}) {
+    frames.push_back({name, hard_cases::load(std::string(name) + ".json")});
+  }
+  std::vector<gs::BenchConfiguration> configurations;
+  for (const char *name : {"projected", "projected-chroma"}) {
+    for (int size : {32, 64, 128, 256, 512}) {
+      gs::BenchConfiguration c = plain(name);
+      c.options.projected.size = size;
+      c.options.projected.largest_texel_footprint_px = INFINITY;
+      c.settings = "size " + std::to_string(size);
+      configurations.push_back(c);
+    }
+  }
+  std::vector<gs::BenchRow> rows;
+  std::string error;
+  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
+                     error)) {
+    std::fprintf(stderr, "hard_case_sweeps: footprint: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("\n### Texel footprint against interior error (the check off)\n\n"
+              "footprint in screen pixels per texel: interior error %% (false shadow + false "
+              "light)\n\n| technique |");
+  for (const gs::BenchFrame &frame : frames) std::printf(" %s |", frame.name.c_str());
+  std::printf("\n|---|");
+  for (std::size_t f = 0; f < frames.size(); ++f) std::printf("---|");
+  std::printf("\n");
+  for (std::size_t k = 0; k < configurations.size(); ++k) {
+    std::printf("| %s %s |", configurations[k].technique.c_str(), configurations[k].settings.c_str());
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      const gs::BenchRow &row = rows[f * configurations.size() + k];
+      if (row.failed) {
+        std::printf(" failed |");
+        continue;
+      }
+      std::printf(" %.2f: %.3f |", row.texel_footprint_px,
+                  (row.errors.false_shadow_interior + row.errors.false_light_interior) * 100.0);
+    }
+    std::printf("\n");
+  }
+  std::fflush(stdout);
+  return true;
 }
 
 // The depth map's default bias, chosen on the scenes where acne and peter-panning show: the two
@@ -245,16 +321,17 @@ int main(int argc, char **argv) {
         "Prints, for each sweep (all of them when none is named), a markdown table of each\n"
         "technique's misclassified %% of receiver pixels against the ray-cast truth, with its\n"
         "interior false shadow and false light in brackets (docs/results.md, \"Numerical hard\n"
-        "cases\"). Sweeps: classes, acne, tilt, contact, translation, scale, shadow-size,\n"
+        "cases\"). Sweeps: classes, footprint, acne, tilt, contact, translation, scale, shadow-size,\n"
         "screen-size. Exit status 1 when a sweep could not render, 2 for an unknown sweep.\n");
     return 0;
   }
   if (sweeps.empty()) {
-    sweeps = {"classes", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
+    sweeps = {"classes", "footprint", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
   }
   for (const std::string &name : sweeps) {
     bool ok = false;
     if (name == "classes") ok = classes();
+    else if (name == "footprint") ok = footprint();
     else if (name == "acne") ok = acne();
     else if (name == "tilt") ok = tilt();
     else if (name == "contact") ok = contact();
@@ -264,7 +341,7 @@ int main(int argc, char **argv) {
     else if (name == "screen-size") ok = screen_size();
     else {
       std::fprintf(stderr,
-                   "hard_case_sweeps: unknown sweep '%s' (classes, acne, tilt, contact, "
+                   "hard_case_sweeps: unknown sweep '%s' (classes, footprint, acne, tilt, contact, "
                    "translation, scale, shadow-size, screen-size)\n",
                    name.c_str());
       return 2;

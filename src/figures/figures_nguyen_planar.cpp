@@ -10,6 +10,7 @@
 #include <glide.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace gs {
 namespace {
@@ -128,6 +129,8 @@ void figure_nguyen_3(Figure &figure, FigureFault fault) {
   TechniqueOptions projected;
   projected.projected.size = 64;
   projected.projected.bilinear = fault != FigureFault::PointSampled;
+  // The figure shows stretched texels on purpose: the coarse-texel refusal is off.
+  projected.projected.largest_texel_footprint_px = INFINITY;
   const Words unshadowed = figures::render_frame("none", {}, scene);
   const Words planar = figures::render_frame(figures::shadowed_by("planar", fault), {}, scene);
   const Words textured = figures::render_frame("projected", projected, scene);

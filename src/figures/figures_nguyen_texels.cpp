@@ -267,6 +267,8 @@ void figure_nguyen_15(Figure &figure, FigureFault fault) {
   TechniqueOptions alpha, chroma;
   alpha.projected.size = chroma.projected.size = 64;
   alpha.projected.bilinear = fault != FigureFault::PointSampled;
+  // The figure shows coarse texels on purpose: the coarse-texel refusal is off.
+  alpha.projected.largest_texel_footprint_px = chroma.projected.largest_texel_footprint_px = INFINITY;
   const Words unshadowed = figures::render_frame("none", {}, scene);
   const Words filtered = figures::render_frame("projected", alpha, scene);
   const Words keyed = figures::render_frame("projected-chroma", chroma, scene);

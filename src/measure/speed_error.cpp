@@ -197,6 +197,7 @@ bool run_bench(const std::vector<BenchFrame> &frames,
         }
       }
       for (std::size_t s = 0; s < row.steps.size(); ++s) row.steps[s].second = median(step_times[s]);
+      row.texel_footprint_px = first.texel_footprint_px;
       row.failed = !first.errors.empty();
       if (row.failed) {
         row.failure = first.errors.front();

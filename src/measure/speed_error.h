@@ -42,6 +42,7 @@ struct BenchRow {
   // row is a failure, its errors are not measured and it is never scored or plotted.
   bool failed = false;
   std::string failure;
+  double texel_footprint_px = 0.0;  // FrameReport::texel_footprint_px of the first render
 };
 
 std::vector<BenchConfiguration> bench_configurations(bool quick);

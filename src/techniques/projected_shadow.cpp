@@ -1,17 +1,18 @@
-// The projected shadow texture in the article's order: step 1's flat render of the caster, step
-// 2's texture, step 5's pass and the frame that runs all five (render_projected_shadows), and the
-// shadow mask. Step 1's light view is fitted in light_view_fit.cpp, step 3 is receiver_coords.cpp,
-// step 4 scene_pass.cpp. Spaces: light view and light clip (step 1); Glide screen (pixels, y down)
+// The projected shadow texture in the article's order: step 2's texture, step 5's pass and the
+// frame that runs all five (render_projected_shadows), and the shadow mask. Step 1's light view
+// is fitted in light_view_fit.cpp and its flat render is caster_from_light.cpp, step 3 is
+// receiver_coords.cpp, step 4 scene_pass.cpp. Spaces: light view and light clip (step 1); Glide screen (pixels, y down)
 // for the light's size x size view in step 1 and the camera in steps 4-5.
 #include "techniques/projected_shadow.h"
 
-#include "techniques/stencil_volume_shadow.h"
+#include "techniques/pierced_receivers.h"
 
 #include <glide_shim.h>
 #include <glideutl.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -19,137 +20,39 @@
 namespace gs {
 namespace {
 
-constexpr GrColor_t kShadowRedArgb = 0x00F00000u;  // red 240: the 565 red field 11110b
-
-GrLOD_t lod_for(int size) {
-  GrLOD_t lod = GR_LOD_256;
-  for (int side = 256; side > size; side /= 2) ++lod;
-  return lod;
-}
-
 using Clock = std::chrono::steady_clock;
 double elapsed_ms(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-}  // namespace
-
-// Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
-void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                              const ProjectedShadowOptions &options, FxU32 texture_address) {
-  const SceneObject &object = scene.objects[caster];
-  view.direct_path = options.direct_path;
-  if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
-    view.direct_path = true;
-    view.note = "a " + std::to_string(view.size) + "x" + std::to_string(view.size) +
-                " shadow texture does not fit in the " + std::to_string(scene.width) + "x" +
-                std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
-                "memory directly";
+// The refusal of a shadow whose texels are too coarse for the screen, naming the light, the
+// caster, the receiver, the footprint, the largest accepted and the smallest size that would be
+// accepted (the footprint halves as the size doubles).
+std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver, float footprint, float largest, int size) {
+  int accepted = size;
+  while (accepted <= 512 && footprint * static_cast<float>(size) / static_cast<float>(accepted) > largest) {
+    accepted *= 2;
   }
-  // The flat render: 565 red 11110b on 0, no depth test, back faces culled (closed casters).
-  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, lod_for(view.size))) {
-    view.usable = false;
-    view.problem = std::string("step 1 cannot render into texture memory: ") +
-                   glideShimGetLastErrorMessage();
-    return;
-  }
-  const FxU32 side = static_cast<FxU32>(view.size);
-  grClipWindow(0, 0, side, side);
-  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
-  grDepthMask(FXFALSE);
-  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
-  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-  grChromakeyMode(GR_CHROMAKEY_DISABLE);
-  // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
-  // sheet) may show the light only its back, so it is drawn from both sides.
-  grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, 0);
-  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
-                 GR_COMBINE_OTHER_NONE, FXFALSE);
-  grConstantColorValue(kShadowRedArgb);
-  const glm::mat4 to_view = view.view * object.model_to_world;
-  const Mesh &mesh = caster_mesh(object);
-  std::vector<GrVertex> screen(mesh.positions.size());
-  std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
-  std::vector<glm::vec4> in_view(mesh.positions.size());
-  std::vector<bool> inside(mesh.positions.size(), true);
-  for (std::size_t i = 0; i < screen.size(); ++i) {
-    in_view[i] = to_view * glm::vec4(mesh.positions[i], 1.0f);
-    for (const glm::vec4 &plane : view.caster_planes) {
-      if (glm::dot(plane, in_view[i]) < 0.0f) inside[i] = false;
-    }
-    const glm::vec4 clip = view.projection * in_view[i];
-    if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
-    depth[i] = clip.w;
-  }
-  const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
-  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
-  auto cell_index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
-  };
-  auto fine_index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
-  };
-  // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.
-  auto occupy = [&](const GrVertex *const *corners, std::size_t count, float nearest) {
-    float x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (std::size_t k = 0; k < count; ++k) {
-      x0 = std::min(x0, corners[k]->x), x1 = std::max(x1, corners[k]->x);
-      y0 = std::min(y0, corners[k]->y), y1 = std::max(y1, corners[k]->y);
-    }
-    for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
-      for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
-        const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
-        view.occupied[cell_at] = true;
-        view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
-      }
-    }
-    for (int cy = fine_index(y0); cy <= fine_index(y1); ++cy) {
-      for (int cx = fine_index(x0); cx <= fine_index(x1); ++cx) {
-        view.covered[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
-      }
-    }
-  };
-  std::vector<ClipVertex> polygon, scratch;
-  std::vector<GrVertex> fan;
-  std::vector<const GrVertex *> corners;
-  for (const glm::uvec3 &t : mesh.triangles) {
-    if (inside[t.x] && inside[t.y] && inside[t.z]) {
-      guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
-      const GrVertex *const triangle[3] = {&screen[t.x], &screen[t.y], &screen[t.z]};
-      occupy(triangle, 3, std::min({depth[t.x], depth[t.y], depth[t.z]}));
-      continue;
-    }
-    // Partly outside the beam's view: only the part inside is drawn.
-    polygon.clear();
-    for (unsigned i : {t.x, t.y, t.z}) polygon.push_back({in_view[i], {}, {}});
-    for (const glm::vec4 &plane : view.caster_planes) {
-      clip_polygon(polygon, plane, scratch);
-      if (polygon.size() < 3) break;
-    }
-    if (polygon.size() < 3) continue;
-    fan.clear();
-    corners.clear();
-    float nearest = INFINITY;
-    for (const ClipVertex &v : polygon) {
-      const glm::vec4 clip = view.projection * v.clip;
-      fan.push_back(to_screen(clip, view.size, view.size));
-      nearest = std::min(nearest, clip.w);
-    }
-    for (const GrVertex &v : fan) corners.push_back(&v);
-    draw_fan(fan);
-    occupy(corners.data(), corners.size(), nearest);
-  }
-  if (view.direct_path) glideShimRenderToFrameBuffer();
-  grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
+  char pixels[64];
+  std::snprintf(pixels, sizeof pixels, "%.1f screen pixels (the largest accepted is %.1f)",
+                static_cast<double>(footprint), static_cast<double>(largest));
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
+         "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
+         "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
+         (accepted <= 512 ? "size " + std::to_string(accepted) + " would be accepted"
+                          : std::string("no size up to 512 would be accepted")) +
+         "); it casts no shadow from this light";
 }
+
+}  // namespace
 
 // Step 2: the region read back and downloaded as ARGB_4444 (or already in texture memory).
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
                                   FxU32 texture_address) {
   ShadowTexture texture;
   texture.address = texture_address;
-  texture.info.smallLod = texture.info.largeLod = lod_for(view.size);
+  texture.info.smallLod = texture.info.largeLod = shadow_lod(view.size);
   texture.info.aspectRatio = GR_ASPECT_1x1;
   // The same 16-bit words, read as ARGB_4444: alpha is the top nibble of the red field.
   // The chroma-key variant reads them as the colour they were drawn in.
@@ -283,6 +186,11 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   FrameGeometry frame = project_scene(scene);
   grRenderBuffer(GR_BUFFER_BACKBUFFER);
   FxU32 next_address = grTexMinAddress(GR_TMU0);
+  const bool point_sampled = options.chroma_key || !options.bilinear;
+  const float largest_footprint =
+      options.largest_texel_footprint_px > 0.0f ? options.largest_texel_footprint_px
+      : point_sampled                           ? kLargestPointSampledFootprintPx
+                                                : kLargestTexelFootprintPx;
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
     if (scene.lights[light].is_projector()) continue;  // slides cast no shadows
     for (std::size_t caster = 0; caster < scene.objects.size(); ++caster) {
@@ -294,43 +202,91 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         if (!fitted.outside_beam) result.errors.push_back(fitted.problem);
         continue;
       }
-      for (LightView &part : split_into_textures(fitted)) {
-        // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
-        GrTexInfo needed{lod_for(part.size), lod_for(part.size), GR_ASPECT_1x1,
-                         GR_TEXFMT_ARGB_4444, nullptr};
-        if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
-            grTexMaxAddress(GR_TMU0) + 8) {
-          result.errors.push_back("TMU memory is full: '" + scene.objects[caster].name +
-                                  "' casts no shadow from light " + std::to_string(light));
-          break;
+      // This caster's textures (a map above 256 is several, and one more per planar receiver it
+      // reaches through); kept only if every one's texels are fine enough for the screen where
+      // the shadow falls.
+      std::vector<ShadowJob> caster_jobs;
+      const FxU32 caster_address = next_address;
+      // The caster's textures for the receivers marked in `receivers`, clipped to the light's
+      // side of `receiver_plane` (world) when there is one.
+      auto cast = [&](const std::vector<bool> &receivers, const glm::vec4 *receiver_plane) {
+        for (LightView &part : split_into_textures(fitted)) {
+          // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
+          GrTexInfo needed{shadow_lod(part.size), shadow_lod(part.size), GR_ASPECT_1x1,
+                           GR_TEXFMT_ARGB_4444, nullptr};
+          if (next_address + grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed) >
+              grTexMaxAddress(GR_TMU0) + 8) {
+            result.errors.push_back("TMU memory is full: '" + scene.objects[caster].name +
+                                    "' casts no shadow from light " + std::to_string(light));
+            return;
+          }
+          ShadowJob job;
+          job.caster = caster;
+          job.light = light;
+          job.view = part;
+          if (receiver_plane) {
+            // A world plane as a light-view plane: the inverse transpose of the view matrix.
+            const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * *receiver_plane;
+            job.view.caster_planes.push_back(plane);
+            job.view.edge_planes.push_back(plane);
+          }
+          auto step_start = Clock::now();
+          render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
+          finish_step(0, step_start);
+          if (!job.view.usable) {
+            result.errors.push_back(job.view.problem);
+            continue;
+          }
+          if (!job.view.note.empty() &&
+              std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
+                  result.warnings.end()) {
+            result.warnings.push_back(job.view.note);
+          }
+          step_start = Clock::now();
+          job.texture = make_shadow_texture(job.view, options, next_address);  // 2
+          finish_step(1, step_start);
+          GrTexInfo info = job.texture.info;
+          next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
+          step_start = Clock::now();
+          job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
+                                                  job.view, options, &receivers);  // 3
+          finish_step(2, step_start);
+          caster_jobs.push_back(std::move(job));
         }
-        ShadowJob job;
-        job.caster = caster;
-        job.light = light;
-        job.view = part;
-        start = Clock::now();
-        render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
-        finish_step(0, start);
-        if (!job.view.usable) {
-          result.errors.push_back(job.view.problem);
-          continue;
-        }
-        if (!job.view.note.empty() &&
-            std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
-                result.warnings.end()) {
-          result.warnings.push_back(job.view.note);
-        }
-        start = Clock::now();
-        job.texture = make_shadow_texture(job.view, options, next_address);  // 2
-        finish_step(1, start);
-        GrTexInfo info = job.texture.info;
-        next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
-        start = Clock::now();
-        job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                job.view, options);  // 3
-        finish_step(2, start);
-        result.jobs.push_back(std::move(job));
+      };
+      start = Clock::now();
+      const std::vector<PiercedReceiver> pierced =
+          pierced_planar_receivers(scene, frame, caster, scene.lights[light].position);
+      result.times.ms[0] += elapsed_ms(start);
+      std::vector<bool> receivers(scene.objects.size(), true);
+      for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
+      bool others = false;  // a receiver left for the whole caster's texture
+      for (std::size_t r = 0; r < scene.objects.size(); ++r) {
+        others = others || (receivers[r] && r != caster && scene.objects[r].receives_shadow);
       }
+      if (others) cast(receivers, nullptr);
+      for (const PiercedReceiver &p : pierced) {
+        if (!p.casts) continue;  // nothing of the caster on the light's side: no shadow on it
+        std::vector<bool> only(scene.objects.size(), false);
+        only[p.receiver] = true;
+        cast(only, &p.plane);
+      }
+      std::vector<FootprintSample> samples;
+      for (const ShadowJob &job : caster_jobs) {
+        samples.insert(samples.end(), job.receivers.footprints.begin(), job.receivers.footprints.end());
+      }
+      const FootprintSample coarsest = shadow_footprint(
+          std::move(samples),
+          kFootprintIgnoredScreenShare * static_cast<float>(scene.width) * static_cast<float>(scene.height));
+      result.texel_footprint_px = std::max(result.texel_footprint_px, coarsest.pixels_per_texel);
+      if (coarsest.pixels_per_texel > largest_footprint) {
+        result.errors.push_back(texel_footprint_error(scene, light, caster, coarsest.receiver,
+                                                      coarsest.pixels_per_texel, largest_footprint,
+                                                      fitted.size));
+        next_address = caster_address;  // its textures are not used
+        continue;
+      }
+      for (ShadowJob &job : caster_jobs) result.jobs.push_back(std::move(job));
     }
   }
   auto start = Clock::now();

@@ -1,13 +1,14 @@
-// Hubert Nguyen's projected shadow texture (Game Developer, 1999), written against Glide as the
-// article's five steps: render the caster flat from the light; make an ARGB_4444 texture of it;
-// compute (s, t) for the receivers; render the scene; render the flagged triangles again with
-// the texture. One texture per caster and light; the caster never receives its own shadow, and
-// no shadow falls outside the light's beam (step 3 clips receivers to it, light_beam.h).
+// Hubert Nguyen's projected shadow texture (Game Developer, 1999) in Glide, as the article's five
+// steps: the caster flat from the light; an ARGB_4444 texture of it; (s, t) for the receivers; the
+// scene; the flagged triangles again with the texture. A texture per caster and light (one more
+// per planar receiver it reaches through: pierced_receivers.h), no shadow on the caster itself or
+// beyond the beam (light_beam.h), and none from a texture too coarse (texel_footprint.h).
 #pragma once
 
 #include "scene/scene.h"
 #include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
+#include "techniques/texel_footprint.h"
 
 #include <glide.h>
 
@@ -31,6 +32,10 @@ struct ProjectedShadowOptions {
   bool projective = true;      // per-pixel s/q (W_DIFF_TMU0); false: the article's per-vertex s
   ShadowAlpha alpha = ShadowAlpha::Constant;
   int border_texels = 2;       // clean border the light's view keeps around the caster
+  // A shadow whose texels span more screen pixels than this on a receiver it falls on is
+  // refused (a per-frame error, nothing cast): its edge would stray more than a pixel from the
+  // true one. 0: the measured default for the filter (texel_footprint.h); infinity: no check.
+  float largest_texel_footprint_px = 0.0f;
 };
 
 // The light's view of one caster (step 1's camera). Fitted to the caster's bounding sphere when
@@ -57,6 +62,9 @@ struct LightView {
   // Light view space planes step 1 clips the caster to (a plane just in front of the light and
   // the view's square inside its clean border); empty when the whole caster is inside them.
   std::vector<glm::vec4> caster_planes;
+  // Those of caster_planes whose cut through the caster is an edge of its shadow (a pierced
+  // receiver's plane, pierced_receivers.h), light view space.
+  std::vector<glm::vec4> edge_planes;
   // The light's beam (light_beam.h): step 3 clips receivers to its lit regions, so step 5
   // darkens nothing the light does not reach.
   LightBeam beam;
@@ -73,6 +81,9 @@ struct LightView {
   // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
   static constexpr int kFineCells = 128;
   std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
+  // The fine cells the caster's silhouette from the light crosses (and its cut by edge_planes):
+  // where the shadow's edge can lie (texel_footprint.h).
+  std::vector<bool> silhouette = std::vector<bool>(kFineCells * kFineCells, false);
 };
 
 struct ShadowTexture {
@@ -93,6 +104,9 @@ struct ShadowTriangle {
 struct ReceiverCoords {
   std::vector<ShadowTriangle> triangles;      // unclipped: the step-4 screen vertices
   std::vector<std::vector<GrVertex>> clipped;  // clipped by the caster's front plane or camera
+  // Per receiver polygon the shadow can fall on: how many screen pixels a texel spans there,
+  // and over how many pixels (texel_footprint.h).
+  std::vector<FootprintSample> footprints;
 };
 
 struct StepTimes {
@@ -115,6 +129,12 @@ struct ShadowJob {
 // the caster is an open mesh; only its part inside LightView::caster_planes) in a
 // size x size region: the back buffer's top-left corner, or texture memory at
 // `texture_address` on the direct path.
+// The Glide LOD of a size x size shadow texture (size a power of two, 1..256).
+inline GrLOD_t shadow_lod(int size) {
+  GrLOD_t lod = GR_LOD_256;
+  for (int side = 256; side > size; side /= 2) ++lod;
+  return lod;
+}
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
                          const ProjectedShadowOptions &options);
 std::vector<LightView> split_into_textures(const LightView &view);
@@ -127,9 +147,11 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
 // Step 3. Every receiver but the caster in the light's space: Listing 2's flags (facing the
 // light, not wholly outside its view), clipped where it is nearer the light than the caster, and
 // (s, t) from the light-space x, y in Glide's 0..256 units.
+// `receivers`, when given, marks (per scene object) the receivers this texture is for.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
-                                       const LightView &view, const ProjectedShadowOptions &options);
+                                       const LightView &view, const ProjectedShadowOptions &options,
+                                       const std::vector<bool> *receivers = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended
@@ -144,6 +166,9 @@ struct ShadowFrame {
   std::vector<ShadowJob> jobs;        // one per caster and light that got a shadow
   std::vector<std::string> warnings;  // what the user should know, `errors` included
   std::vector<std::string> errors;    // casters left without a shadow they should cast, and why
+  // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
+  // every caster and light, cast or refused: what largest_texel_footprint_px bounds.
+  float texel_footprint_px = 0.0f;
 };
 
 // The whole frame in the article's order, into the back buffer. With `synchronous`, each step

@@ -1,5 +1,6 @@
 // Step 3: the receivers' (s, t) from the light's view, and which receiver triangles can be in
-// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells). Spaces: world
+// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells), and how many
+// screen pixels a texel spans where its edge can fall (texel_footprint.h). Spaces: world
 // and light view / light clip in; camera Glide screen vertices (pixels, y down) out, with (s, t)
 // in Glide texture units (0..256 across the shadow texture) as sow, tow over their divisor.
 #include "techniques/projected_shadow.h"
@@ -109,11 +110,71 @@ void set_texture_fields(GrVertex &v, const LightView &view, const glm::mat4 &lig
   v.a = shadow_alpha(light, view, world, options.alpha);
 }
 
+// Where the caster's shadow can fall, as world-space planes (texel_footprint.h): beyond the
+// caster's front and inside the camera's view. edge_rectangle adds each receiver polygon's own
+// bound in the texture.
+FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
+                               const LightView &view) {
+  FootprintSpace space;
+  space.light_clip = view.projection * view.view;
+  space.texels = static_cast<float>(view.size);
+  space.camera_clip = frame.view_projection;
+  space.pixels = glm::vec2(static_cast<float>(scene.width), static_cast<float>(scene.height));
+  space.planes.push_back(glm::transpose(view.view) * glm::vec4(0.0f, 0.0f, -1.0f, -view.caster_front));
+  const glm::mat4 camera_planes = glm::transpose(frame.view_projection);
+  for (const glm::vec4 &side : {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
+                                glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1)}) {
+    space.planes.push_back(camera_planes * side);
+  }
+  return space;
+}
+
+// The world-space planes of the rectangle (in the texture) around the silhouette's cells
+// (LightView::silhouette: where the shadow's edge can lie; deep inside a shadow the texels' size
+// moves no edge) that a receiver polygon, given by its light clip coordinates (all w > 0), can
+// see: those within its texel box widened by bilinear filtering's reach, as in
+// reaches_covered_cell. Outside it no shadow edge falls on the polygon. False when none.
+bool edge_rectangle(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
+                    const glm::mat4 &world_to_light_clip, std::vector<glm::vec4> &planes) {
+  constexpr float kReachTexels = 1.5f;
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+  const float cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
+  auto index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kFineCells - 1);
+  };
+  int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
+  for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
+    for (int x = index(low.x - kReachTexels); x <= index(high.x + kReachTexels); ++x) {
+      if (!view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)]) continue;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  }
+  if (x1 < 0) return false;
+  // Light NDC of the rectangle's sides, a texel wider (bilinear's reach; rows run down, y up).
+  const float ndc_cell = 2.0f / LightView::kFineCells, texel = 2.0f / static_cast<float>(view.size);
+  auto at = [&](int cells) { return static_cast<float>(cells) * ndc_cell; };
+  const float left = -1.0f + at(x0) - texel, right = -1.0f + at(x1 + 1) + texel;
+  const float top = 1.0f - at(y0) + texel, bottom = 1.0f - at(y1 + 1) - texel;
+  const glm::mat4 to_world_planes = glm::transpose(world_to_light_clip);  // clip plane -> world
+  for (const glm::vec4 &side : {glm::vec4(1, 0, 0, -left), glm::vec4(-1, 0, 0, right),
+                                glm::vec4(0, 1, 0, -bottom), glm::vec4(0, -1, 0, top)}) {
+    planes.push_back(to_world_planes * side);
+  }
+  return true;
+}
+
 }  // namespace
 
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
-                                       const LightView &view, const ProjectedShadowOptions &options) {
+                                       const LightView &view, const ProjectedShadowOptions &options,
+                                       const std::vector<bool> *receivers) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -136,10 +197,31 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     }
   }
   const LightBeam &beam = view.beam;
-  std::vector<ClipVertex> polygon, scratch;
+  const FootprintSpace footprint = footprint_space(scene, frame, view);
+  std::vector<ClipVertex> polygon, scratch, footprint_polygon;
+  std::vector<glm::vec4> footprint_planes;
+  // The texels' footprint on the part of a receiver polygon that can be shadowed (world
+  // corners, and their light clip coordinates).
+  auto measure_footprint = [&](std::size_t receiver, const glm::vec3 &normal,
+                               const glm::vec3 *const *corners, const glm::vec4 *corners_clip,
+                               std::size_t count) {
+    footprint_planes = footprint.planes;
+    if (!edge_rectangle(view, corners_clip, count, light_clip, footprint_planes)) return;
+    footprint_polygon.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      footprint_polygon.push_back({glm::vec4(*corners[k], 1.0f), *corners[k], {}});
+    }
+    FootprintSample sample =
+        texel_footprint(footprint, normal, footprint_planes, footprint_polygon, scratch);
+    if (sample.screen_area <= 0.0f) return;
+    sample.receiver = receiver;
+    coords.footprints.push_back(sample);
+  };
+
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
     if (r == caster || !receiver.object->receives_shadow) continue;
+    if (receivers && !(*receivers)[r]) continue;
     const std::size_t n = receiver.world.size();
     std::vector<glm::vec4> lc(n);  // light clip
     std::vector<unsigned> flags(n);
@@ -153,7 +235,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
-      if (glm::dot(glm::cross(b - a, c - a), light.position - a) <= 0.0f) continue;
+      const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
+      if (glm::dot(face, light.position - a) <= 0.0f) continue;
       if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
       const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
       const bool in_front = (any_outside & 0x10) != 0;
@@ -176,6 +259,10 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         }
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         triangle.reaches_caster = reaches_covered_cell(view, corners, 3);
+        if (triangle.reaches_caster) {
+          const glm::vec3 *const world[3] = {&a, &b, &c};
+          measure_footprint(r, glm::normalize(face), world, corners, 3);
+        }
         coords.triangles.push_back(triangle);
         continue;
       }
@@ -202,6 +289,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         std::vector<glm::vec4> corners;
         for (const ClipVertex &v : part) corners.push_back(view.projection * v.clip);
         if (!sees_caster(view, corners.data(), corners.size())) continue;
+        std::vector<const glm::vec3 *> world;
+        for (const ClipVertex &v : part) world.push_back(&v.world);
+        measure_footprint(r, glm::normalize(face), world.data(), corners.data(), world.size());
         std::vector<GrVertex> screen;
         project_camera_polygon(frame, scene, part, scratch, screen);
         for (std::size_t i = 0; i < screen.size(); ++i) {

@@ -47,6 +47,7 @@ class ProjectedTexture final : public ShadowTechnique {
     report.total_ms = frame_.times.total_ms;
     report.warnings = frame_.warnings;
     report.errors = frame_.errors;
+    report.texel_footprint_px = frame_.texel_footprint_px;
     return report;
   }
   void render_mask(const Scene &scene) override { render_shadow_mask(scene, options_, frame_); }

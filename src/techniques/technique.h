@@ -26,6 +26,9 @@ struct FrameReport {
   // Shadows this frame should show and does not (a caster or a light left without its shadow,
   // each naming them): the frame is wrong, and no caller may report it as a success.
   std::vector<std::string> errors;
+  // The projected techniques: the most screen pixels one shadow texel spans where a shadow can
+  // fall (texel_footprint.h); 0 for the others.
+  double texel_footprint_px = 0.0;
 };
 
 class ShadowTechnique {

@@ -237,9 +237,21 @@ TEST(HardCases, TrianglesCrossingTheEyesNearPlane) {
     const Truth truth = truth_of(scene);
     ASSERT_GT(truth.shadow_pixels, 500);
     for (const std::string &name : kTechniques) {
-      const Outcome o = run(name, scene, truth);
+      gs::TechniqueOptions options;
+      if (name == "projected-chroma" && near_plane < 0.1f) {
+        // Seen from 0.05 m, a 128-texel map's texels span 4.4 px of the floor near the camera,
+        // over the point-sampled limit (3 px, texel_footprint.h): refused by name. The case
+        // (clipping at the near plane) is checked at 256 texels.
+        const Outcome refused = run(name, scene, truth);
+        ASSERT_EQ(refused.refusals.size(), 1u) << name;
+        EXPECT_NE(refused.refusals[0].find("128-texel shadow is too coarse for the screen"),
+                  std::string::npos) << refused.refusals[0];
+        options.projected.size = 256;
+      }
+      const Outcome o = run(name, scene, truth, options);
       report(name + " near " + std::to_string(near_plane), o);
       expect_clean_glide(name, o);
+      for (const std::string &e : o.refusals) ADD_FAILURE() << name << ": " << e;
       EXPECT_EQ(o.errors.false_shadow_interior, 0.0) << name << " near " << near_plane;
       EXPECT_EQ(o.errors.false_light_interior, 0.0) << name << " near " << near_plane;
     }

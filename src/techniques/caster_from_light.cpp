@@ -1,0 +1,199 @@
+// Step 1 of the projected shadow texture: the caster drawn flat from the light (565 red 11110b on
+// 0) into the back buffer or texture memory, clipped to its view's caster planes, the cover of
+// texture cells it touched (LightView::occupied, covered) and the cells its silhouette crosses. Spaces: light view and light clip
+// in; Glide screen (pixels, y down) of the light's size x size view out.
+#include "techniques/projected_shadow.h"
+
+#include "techniques/stencil_volume_shadow.h"
+
+#include <glide_shim.h>
+#include <glideutl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace gs {
+namespace {
+
+constexpr GrColor_t kShadowRedArgb = 0x00F00000u;  // red 240: the 565 red field 11110b
+
+}  // namespace
+
+// Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address) {
+  const SceneObject &object = scene.objects[caster];
+  view.direct_path = options.direct_path;
+  if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
+    view.direct_path = true;
+    view.note = "a " + std::to_string(view.size) + "x" + std::to_string(view.size) +
+                " shadow texture does not fit in the " + std::to_string(scene.width) + "x" +
+                std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
+                "memory directly";
+  }
+  // The flat render: 565 red 11110b on 0, no depth test, back faces culled (closed casters).
+  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
+    view.usable = false;
+    view.problem = std::string("step 1 cannot render into texture memory: ") +
+                   glideShimGetLastErrorMessage();
+    return;
+  }
+  const FxU32 side = static_cast<FxU32>(view.size);
+  grClipWindow(0, 0, side, side);
+  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
+  grDepthMask(FXFALSE);
+  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+  grChromakeyMode(GR_CHROMAKEY_DISABLE);
+  // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
+  // sheet) may show the light only its back, so it is drawn from both sides.
+  grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
+  grBufferClear(0, 0, 0);
+  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  grConstantColorValue(kShadowRedArgb);
+  const glm::mat4 to_view = view.view * object.model_to_world;
+  const Mesh &mesh = caster_mesh(object);
+  std::vector<GrVertex> screen(mesh.positions.size());
+  std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
+  std::vector<glm::vec4> in_view(mesh.positions.size());
+  std::vector<bool> inside(mesh.positions.size(), true);
+  for (std::size_t i = 0; i < screen.size(); ++i) {
+    in_view[i] = to_view * glm::vec4(mesh.positions[i], 1.0f);
+    for (const glm::vec4 &plane : view.caster_planes) {
+      if (glm::dot(plane, in_view[i]) < 0.0f) inside[i] = false;
+    }
+    const glm::vec4 clip = view.projection * in_view[i];
+    if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
+    depth[i] = clip.w;
+  }
+  const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
+  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
+  auto cell_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
+  };
+  auto fine_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
+  };
+  // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.
+  auto occupy = [&](const GrVertex *const *corners, std::size_t count, float nearest) {
+    float x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (std::size_t k = 0; k < count; ++k) {
+      x0 = std::min(x0, corners[k]->x), x1 = std::max(x1, corners[k]->x);
+      y0 = std::min(y0, corners[k]->y), y1 = std::max(y1, corners[k]->y);
+    }
+    for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
+      for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
+        const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
+        view.occupied[cell_at] = true;
+        view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
+      }
+    }
+    for (int cy = fine_index(y0); cy <= fine_index(y1); ++cy) {
+      for (int cx = fine_index(x0); cx <= fine_index(x1); ++cx) {
+        view.covered[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
+      }
+    }
+  };
+  // Marks the fine cells along a segment of the light's screen (texels) in view.silhouette.
+  auto trace = [&](const GrVertex &a, const GrVertex &b) {
+    const float cells = std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)) / fine_cell;
+    const int steps = std::min(4 * LightView::kFineCells, static_cast<int>(std::ceil(2.0f * cells)) + 1);
+    for (int k = 0; k <= steps; ++k) {
+      const float f = static_cast<float>(k) / static_cast<float>(steps);
+      const int x = fine_index(a.x + (b.x - a.x) * f), y = fine_index(a.y + (b.y - a.y) * f);
+      view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)] = true;
+    }
+  };
+  // The caster's silhouette from the light: edges (keyed by their ends' model positions, so
+  // vertices split for normals still join) between a triangle facing the light and one facing
+  // away, or on one triangle only (an open mesh's rim). Facing in light view space, where the
+  // light is at the origin.
+  std::map<std::array<float, 6>, std::pair<int, int>> edges;  // facing the light, triangles
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
+    const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
+    const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
+    for (const auto &end : ends) {
+      glm::vec3 p = mesh.positions[end[0]], q = mesh.positions[end[1]];
+      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q);
+      std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
+      edge.first += facing;
+      edge.second += 1;
+    }
+  }
+  std::map<std::array<float, 6>, unsigned> first_index;  // an end's vertex index, per position
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
+    for (const auto &end : ends) {
+      unsigned i = end[0], j = end[1];
+      glm::vec3 p = mesh.positions[i], q = mesh.positions[j];
+      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q), std::swap(i, j);
+      const std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
+      const bool silhouette = edge.second == 1 || (edge.first > 0 && edge.first < edge.second);
+      if (!silhouette) continue;
+      // The part of the edge inside the caster planes (light view space, parametric clip).
+      float from = 0.0f, to = 1.0f;
+      for (const glm::vec4 &plane : view.caster_planes) {
+        const float di = glm::dot(plane, in_view[i]), dj = glm::dot(plane, in_view[j]);
+        if (di < 0.0f && dj < 0.0f) from = 1.0f, to = 0.0f;
+        else if (di < 0.0f) from = std::max(from, di / (di - dj));
+        else if (dj < 0.0f) to = std::min(to, di / (di - dj));
+      }
+      if (from >= to) continue;
+      trace(to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * from), view.size, view.size),
+            to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * to), view.size, view.size));
+    }
+  }
+  std::vector<ClipVertex> polygon, scratch;
+  std::vector<GrVertex> fan;
+  std::vector<const GrVertex *> corners;
+  for (const glm::uvec3 &t : mesh.triangles) {
+    if (inside[t.x] && inside[t.y] && inside[t.z]) {
+      guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
+      const GrVertex *const triangle[3] = {&screen[t.x], &screen[t.y], &screen[t.z]};
+      occupy(triangle, 3, std::min({depth[t.x], depth[t.y], depth[t.z]}));
+      continue;
+    }
+    // Partly outside the beam's view: only the part inside is drawn.
+    polygon.clear();
+    for (unsigned i : {t.x, t.y, t.z}) polygon.push_back({in_view[i], {}, {}});
+    for (const glm::vec4 &plane : view.caster_planes) {
+      clip_polygon(polygon, plane, scratch);
+      if (polygon.size() < 3) break;
+    }
+    if (polygon.size() < 3) continue;
+    fan.clear();
+    corners.clear();
+    float nearest = INFINITY;
+    for (const ClipVertex &v : polygon) {
+      const glm::vec4 clip = view.projection * v.clip;
+      fan.push_back(to_screen(clip, view.size, view.size));
+      nearest = std::min(nearest, clip.w);
+    }
+    for (const GrVertex &v : fan) corners.push_back(&v);
+    // The cut by a pierced receiver's plane bounds the shadow on that receiver (the cuts by the
+    // view's border do not: the beam bounds the shadow there, step 3).
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const glm::vec4 &p = polygon[k].clip, &q = polygon[(k + 1) % polygon.size()].clip;
+      for (const glm::vec4 &plane : view.edge_planes) {
+        const float scale = 1e-4f * (glm::length(glm::vec3(p)) + glm::length(glm::vec3(q)));
+        if (std::abs(glm::dot(plane, p)) <= scale && std::abs(glm::dot(plane, q)) <= scale) {
+          trace(fan[k], fan[(k + 1) % fan.size()]);
+        }
+      }
+    }
+    draw_fan(fan);
+    occupy(corners.data(), corners.size(), nearest);
+  }
+  if (view.direct_path) glideShimRenderToFrameBuffer();
+  grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
+}
+
+}  // namespace gs
