@@ -4,6 +4,7 @@
 // exactly); light clip (GL convention) and light texture (s, t, r in 0..1 after the divide by
 // q = light-view depth) in the texgen planes; camera eye and clip.
 #include "techniques/depth_map_shadow.h"
+#include "techniques/step_clock.h"
 
 #include "techniques/depth_map_passes.h"
 #include "techniques/facing_triangles.h"
@@ -263,9 +264,6 @@ void Passes::draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double elapsed_ms(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // GL errors the passes raised, as one warning each (they mean a bug here, not a user error).
 void report_gl_errors(const GlApi &gl, std::vector<std::string> &warnings) {

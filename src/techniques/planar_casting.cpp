@@ -83,7 +83,7 @@ struct CasterTriangle {
   DirectionBox box;
 };
 
-struct Caster {
+struct PlanarCaster {
   std::size_t object = 0;  // index into scene.objects
   std::vector<CasterTriangle> triangles;
   DirectionBox box = kEmptyBox;
@@ -108,12 +108,12 @@ struct Receiver {
   DirectionBox box = kEmptyBox;
 };
 
-Caster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &light,
+PlanarCaster prepare_caster(const Scene &scene, std::size_t index, const SpotLight &light,
                       const glm::mat4 &light_view) {
   const SceneObject &object = scene.objects[index];
   const Mesh &mesh = object.shadow_mesh.triangles.empty() ? object.mesh : object.shadow_mesh;
   const LitVertices lit = light_vertices(mesh, object.model_to_world, light_view);
-  Caster caster;
+  PlanarCaster caster;
   caster.object = index;
   // A closed caster's light-facing triangles cover its whole shadow, so the others are culled
   // (the article's "lightface-culled"). An open one (a tube, a sheet) may show the light only
@@ -254,7 +254,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
     if (light.is_projector()) continue;  // slides cast no shadows
     const glm::mat4 light_view = light_view_matrix(light);
     const LightBeam beam = light_beam(light);
-    std::vector<Caster> casters;
+    std::vector<PlanarCaster> casters;
     std::vector<Receiver> receivers;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       if (scene.objects[i].casts_shadow) casters.push_back(prepare_caster(scene, i, light, light_view));
@@ -264,7 +264,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
     }
     ShadowPolygons &out = result.lights[l];
     for (const Receiver &receiver : receivers) {
-      for (const Caster &caster : casters) {
+      for (const PlanarCaster &caster : casters) {
         if (caster.object == receiver.object || !caster.box.overlaps(receiver.box)) continue;
         for (const ReceiverTriangle &r : receiver.triangles) {
           if (!r.box.overlaps(caster.box)) continue;

@@ -3,6 +3,7 @@
 // Spaces: world (the shadow polygons); Glide screen through the camera (pixels, y down,
 // oow = 1/w) in step 3.
 #include "techniques/planar_shadow.h"
+#include "techniques/step_clock.h"
 
 #include "scene/lighting.h"
 #include "techniques/light_beam.h"
@@ -28,8 +29,8 @@ namespace {
 // writes on and GR_CMP_LESS (strictly nearer passes):
 //   - the cover, kCoverCodes nearer than its receiver: it passes the receiver the scene pass left
 //     in the depth buffer and darkens the pixel;
-//   - the seal, kSealCodes nearer again, at alpha 0 (the colour is left as it is): it writes a
-//     depth that every later cover on that pixel, lying on the same plane, fails by kSealCodes.
+//   - the seal, kCoverSealCodes nearer again, at alpha 0 (the colour is left as it is): it writes a
+//     depth that every later cover on that pixel, lying on the same plane, fails by kCoverSealCodes.
 // A single level (the cover with depth writes on) is not enough: two polygons on one plane would
 // have to interpolate exactly the same depth at a pixel they share for the second to fail, and
 // the rounding of their different vertices makes either one the nearer as often as not.
@@ -50,8 +51,8 @@ namespace {
 // through.
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
-constexpr float kSealCodes = 2.0f * kClippedCoverCodes;
-constexpr float kLightBandCodes = kClippedCoverCodes + kSealCodes;
+constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
+constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
 
 float nearer(float oow, float codes) { return oow * std::exp2(codes / 4096.0f); }
 
@@ -141,7 +142,7 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       const float cover = band + (clipped ? kClippedCoverCodes : kCoverCodes);
       for (GrVertex &v : screen) v.oow = nearer(v.oow, cover), v.a = alpha;
       draw_fan(screen);
-      for (GrVertex &v : screen) v.oow = nearer(v.oow, kSealCodes), v.a = 0.0f;
+      for (GrVertex &v : screen) v.oow = nearer(v.oow, kCoverSealCodes), v.a = 0.0f;
       draw_fan(screen);
     }
   }
@@ -149,9 +150,6 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
 }
 
 using Clock = std::chrono::steady_clock;
-double elapsed_ms(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 class PlanarShadow final : public ShadowTechnique {
  public:

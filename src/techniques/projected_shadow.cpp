@@ -4,6 +4,7 @@
 // receiver_coords.cpp, step 4 scene_pass.cpp. Spaces: light view and light clip (step 1); Glide screen (pixels, y down)
 // for the light's size x size view in step 1 and the camera in steps 4-5.
 #include "techniques/projected_shadow.h"
+#include "techniques/step_clock.h"
 
 #include "techniques/pierced_receivers.h"
 
@@ -21,9 +22,6 @@ namespace gs {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double elapsed_ms(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The refusal of a shadow whose texels are too coarse for the screen, naming the light, the
 // caster, the receiver, the footprint, the largest accepted and the smallest size that would be

@@ -4,6 +4,7 @@
 // (GL convention); GL window coordinates of Glide's back buffer (row 0 at the bottom; the shim
 // flips rows on every read). Volumes are homogeneous world points, w = 0 away from the light.
 #include "techniques/stencil_volume_shadow.h"
+#include "techniques/step_clock.h"
 
 #include "techniques/facing_triangles.h"
 #include "techniques/gl_api.h"
@@ -37,9 +38,6 @@ using stencil_volume::Caster;
 constexpr float kInfinityEpsilon = 1.0e-6f;
 
 using Clock = std::chrono::steady_clock;
-double elapsed_ms(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // Kwoon's equation 7 in GL's convention (Lengyel): the camera's frustum with its far plane at
 // infinity, NDC depth -1 at the near plane and 1 - kInfinityEpsilon at infinity.

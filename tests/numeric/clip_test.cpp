@@ -13,9 +13,9 @@
 
 namespace {
 
-constexpr int kW = 64;  // GlideWindowTest's window
-constexpr int kH = 64;
-constexpr std::size_t kPixels = static_cast<std::size_t>(kW) * kH;
+constexpr int kClipWidth = 64;  // GlideWindowTest's window
+constexpr int kClipHeight = 64;
+constexpr std::size_t kClipPixels = static_cast<std::size_t>(kClipWidth) * kClipHeight;
 
 // The clip window, max exclusive: 32x32 pixels.
 constexpr int kMinX = 16, kMinY = 12, kMaxX = 48, kMaxY = 44;
@@ -23,7 +23,7 @@ constexpr int kWindowPixels = (kMaxX - kMinX) * (kMaxY - kMinY);
 
 bool in_window(int x, int y) { return x >= kMinX && x < kMaxX && y >= kMinY && y < kMaxY; }
 
-std::string hex(unsigned value) {
+std::string clip_hex(unsigned value) {
   std::ostringstream s;
   s << "0x" << std::hex << std::uppercase << std::setw(4) << std::setfill('0') << value;
   return s.str();
@@ -70,7 +70,7 @@ class ClipTest : public GlideWindowTest {
   }
 
   static void put_background(std::vector<FxU16> &words) {
-    ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2,
+    ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kClipWidth, kClipHeight, kClipWidth * 2,
                                  words.data()))
         << glideShimGetLastErrorMessage();
   }
@@ -93,7 +93,7 @@ TEST_F(ClipTest, CrossingTriangleStaysInsideAndMatchesScissoredCoverage) {
   // Random background without 0xFFFF, so the white triangle is told apart from it.
   std::mt19937 random(3001);
   std::uniform_int_distribution<int> word(0, 0xFFFE);
-  std::vector<FxU16> background(kPixels);
+  std::vector<FxU16> background(kClipPixels);
   for (FxU16 &w : background) w = static_cast<FxU16>(word(random));
   flat_white();
   const std::vector<FxU16> clipped = render(background, true, kCrossA, kCrossB, kCrossC);
@@ -102,13 +102,13 @@ TEST_F(ClipTest, CrossingTriangleStaysInsideAndMatchesScissoredCoverage) {
 
   int changed_outside = 0, covered_clipped = 0, covered_scissored = 0, disagree = 0;
   std::ostringstream where;
-  for (int y = 0; y < kH; ++y) {
-    for (int x = 0; x < kW; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y * kW + x);
+  for (int y = 0; y < kClipHeight; ++y) {
+    for (int x = 0; x < kClipWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kClipWidth + x);
       if (!in_window(x, y)) {
         if (clipped[i] != background[i] && changed_outside++ < 3) {
           ADD_FAILURE() << "clipped draw changed (" << x << "," << y << ") outside the window "
-                        << "from " << hex(background[i]) << " to " << hex(clipped[i]);
+                        << "from " << clip_hex(background[i]) << " to " << clip_hex(clipped[i]);
         }
         continue;
       }
@@ -140,15 +140,15 @@ TEST_F(ClipTest, TriangleInsideTheWindowIsDrawnBitIdentically) {
   const GrVertex a = at(17.3f, 13.9f, 255.0f, 0.0f, 37.0f);
   const GrVertex b = at(46.7f, 20.2f, 3.0f, 201.0f, 90.0f);
   const GrVertex c = at(24.55f, 43.4f, 140.0f, 77.0f, 255.0f);
-  std::vector<FxU16> background(kPixels, 0x0000);
+  std::vector<FxU16> background(kClipPixels, 0x0000);
   const std::vector<FxU16> clipped = render(background, true, a, b, c);
   const std::vector<FxU16> direct = render(background, false, a, b, c);
   expect_no_error();
   int covered = 0, differ = 0;
-  for (std::size_t i = 0; i < kPixels; ++i) {
+  for (std::size_t i = 0; i < kClipPixels; ++i) {
     covered += direct[i] != 0;
     if (clipped[i] != direct[i] && differ++ < 5) {
-      ADD_FAILURE() << "pixel (" << i % kW << "," << i / kW << "): guDrawTriangleWithClip wrote "
+      ADD_FAILURE() << "pixel (" << i % kClipWidth << "," << i / kClipWidth << "): guDrawTriangleWithClip wrote "
                     << rgb565(clipped[i]) << ", grDrawTriangle " << rgb565(direct[i]);
     }
   }
@@ -177,7 +177,7 @@ bool truncation_within(int level, int bits, double exact, double tolerance) {
 TEST_F(ClipTest, GouraudColourSurvivesClipping) {
   // Black background; every vertex channel is at least 20, so a covered pixel is never 0.
   gouraud();
-  std::vector<FxU16> background(kPixels, 0x0000);
+  std::vector<FxU16> background(kClipPixels, 0x0000);
   const std::vector<FxU16> clipped = render(background, true, kCrossA, kCrossB, kCrossC);
   const std::vector<FxU16> scissored = render(background, false, kCrossA, kCrossB, kCrossC);
   expect_no_error();
@@ -189,7 +189,7 @@ TEST_F(ClipTest, GouraudColourSurvivesClipping) {
   int compared = 0, bad = 0;
   for (int y = kMinY; y < kMaxY; ++y) {
     for (int x = kMinX; x < kMaxX; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y * kW + x);
+      const std::size_t i = static_cast<std::size_t>(y * kClipWidth + x);
       if (clipped[i] == 0 || scissored[i] == 0) continue;
       ++compared;
       const FxU16 got = clipped[i], ref = scissored[i];
@@ -218,7 +218,7 @@ TEST_F(ClipTest, TrianglesOutsideTheWindowDrawNothing) {
   flat_white();
   std::mt19937 random(3004);
   std::uniform_int_distribution<int> word(0, 0xFFFE);
-  std::vector<FxU16> background(kPixels);
+  std::vector<FxU16> background(kClipPixels);
   for (FxU16 &w : background) w = static_cast<FxU16>(word(random));
   put_background(background);
   struct Case {
@@ -244,10 +244,10 @@ TEST_F(ClipTest, TrianglesOutsideTheWindowDrawNothing) {
   }
   const std::vector<FxU16> frame = read_buffer();
   int changed = 0;
-  for (std::size_t i = 0; i < kPixels; ++i) {
+  for (std::size_t i = 0; i < kClipPixels; ++i) {
     if (frame[i] != background[i] && changed++ < 3) {
-      ADD_FAILURE() << "pixel (" << i % kW << "," << i / kW << ") changed from "
-                    << hex(background[i]) << " to " << hex(frame[i]);
+      ADD_FAILURE() << "pixel (" << i % kClipWidth << "," << i / kClipWidth << ") changed from "
+                    << clip_hex(background[i]) << " to " << clip_hex(frame[i]);
     }
   }
   EXPECT_EQ(changed, 0) << "pixels changed by triangles outside the clip window";

@@ -20,14 +20,14 @@
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kTruthWidth = 320, kTruthHeight = 240;
 constexpr std::size_t kFloor = 0, kBox = 1;
 
 gs::SceneObject object(const std::string &name, gs::Mesh mesh, const glm::vec3 &at) {
   return placed_object(name, std::move(mesh), at);
 }
 
-gs::Scene box_over_floor() { return box_over_floor_scene(kWidth, kHeight); }
+gs::Scene box_over_floor() { return box_over_floor_scene(kTruthWidth, kTruthHeight); }
 
 gs::GroundTruth truth_of(const gs::Scene &scene) {
   gs::GroundTruth truth;
@@ -79,7 +79,7 @@ int count(const std::vector<std::uint8_t> &mask) {
 TEST(GroundTruthTest, BoxShadowIsTheAnalyticSquare) {
   const gs::Scene scene = box_over_floor();
   const gs::GroundTruth truth = truth_of(scene);
-  ASSERT_EQ(truth.object.size(), static_cast<std::size_t>(kWidth * kHeight));
+  ASSERT_EQ(truth.object.size(), static_cast<std::size_t>(kTruthWidth * kTruthHeight));
   ASSERT_EQ(truth.lights, 1u);
   // Only the top face (y = 2) faces the light at y = 8: its shadow on y = 0 has side 1 * 8 / 6.
   const float half = 2.0f / 3.0f;
@@ -87,9 +87,9 @@ TEST(GroundTruthTest, BoxShadowIsTheAnalyticSquare) {
       to_pixels(scene, {-half, 0, -half}), to_pixels(scene, {half, 0, -half}),
       to_pixels(scene, {half, 0, half}), to_pixels(scene, {-half, 0, half})};
   int missing = 0, outside = 0, box_pixels = 0;
-  for (int j = 0; j < kHeight; ++j) {
-    for (int i = 0; i < kWidth; ++i) {
-      const std::size_t p = static_cast<std::size_t>(j) * kWidth + i;
+  for (int j = 0; j < kTruthHeight; ++j) {
+    for (int i = 0; i < kTruthWidth; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * kTruthWidth + i;
       const double d = inside_distance(square, {static_cast<float>(i) + 0.5f, static_cast<float>(j) + 0.5f});
       if (truth.shadow[p] == 1 && (truth.object[p] != int(kFloor) || d < -1.0)) ++outside;
       if (truth.object[p] == int(kFloor) && d > 1.0 && truth.shadow[p] != 1) ++missing;
@@ -110,9 +110,9 @@ TEST(GroundTruthTest, LitFloorMatchesTheLightingModel) {
   const gs::Scene scene = box_over_floor();
   const gs::GroundTruth truth = truth_of(scene);
   int checked = 0;
-  for (int j = 0; j < kHeight; j += 7) {
-    for (int i = 0; i < kWidth; i += 7) {
-      const std::size_t p = static_cast<std::size_t>(j) * kWidth + i;
+  for (int j = 0; j < kTruthHeight; j += 7) {
+    for (int i = 0; i < kTruthWidth; i += 7) {
+      const std::size_t p = static_cast<std::size_t>(j) * kTruthWidth + i;
       if (truth.object[p] != int(kFloor) || truth.reach[p] != gs::LightReach::Lit) continue;
       const glm::vec3 expected =
           gs::shade_vertex(scene, glm::vec3(floor_point(scene, i, j)), {0, 1, 0}, glm::vec3(1.0f)) *
@@ -152,9 +152,9 @@ TEST(GroundTruthTest, PointsBehindTheLightAreOutside) {
   scene.lights[0].target = {0, 0.5f, -10};
   const gs::GroundTruth truth = truth_of(scene);
   int behind = 0, in_front = 0;
-  for (int j = 0; j < kHeight; ++j) {
-    for (int i = 0; i < kWidth; ++i) {
-      const std::size_t p = static_cast<std::size_t>(j) * kWidth + i;
+  for (int j = 0; j < kTruthHeight; ++j) {
+    for (int i = 0; i < kTruthWidth; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * kTruthWidth + i;
       if (truth.object[p] != int(kFloor)) continue;
       const glm::dvec3 at = floor_point(scene, i, j);
       if (at.z > -1.9) {

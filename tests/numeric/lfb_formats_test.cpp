@@ -12,7 +12,7 @@
 
 namespace {
 
-constexpr int kW = 64, kH = 64;
+constexpr int kFormatsWidth = 64, kFormatsHeight = 64;
 
 class LfbFormatsTest : public GlideWindowTest {
  protected:
@@ -77,7 +77,7 @@ TEST_F(LfbFormatsTest, ColourAndDepthFormatsWriteBothBuffers) {
 // Write locks in every mode: the program writes a few pixels in the lock's format; only those
 // change, converted as grLfbWriteRegion converts the same source format.
 TEST_F(LfbFormatsTest, WriteLocksInEveryModeChangeOnlyThePixelsWritten) {
-  const std::vector<FxU16> background = random_words(21, kW * kH), depth = random_words(22, kW * kH);
+  const std::vector<FxU16> background = random_words(21, kFormatsWidth * kFormatsHeight), depth = random_words(22, kFormatsWidth * kFormatsHeight);
   struct Case {
     GrLfbWriteMode_t mode;
     int bytes;
@@ -88,14 +88,14 @@ TEST_F(LfbFormatsTest, WriteLocksInEveryModeChangeOnlyThePixelsWritten) {
                        Case{GR_LFBWRITEMODE_1555_DEPTH, 4}, Case{GR_LFBWRITEMODE_ZA16, 2}}) {
     for (GrOriginLocation_t origin : {GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT}) {
       const std::string what = "mode " + std::to_string(c.mode) + " origin " + std::to_string(origin);
-      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, const_cast<FxU16 *>(background.data())));
-      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kW, kH, kW * 2, const_cast<FxU16 *>(depth.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kFormatsWidth, kFormatsHeight, kFormatsWidth * 2, const_cast<FxU16 *>(background.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kFormatsWidth, kFormatsHeight, kFormatsWidth * 2, const_cast<FxU16 *>(depth.data())));
       GrLfbInfo_t info{};
       info.size = sizeof info;
       ASSERT_TRUE(grLfbLock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER, c.mode, origin, FXFALSE, &info))
           << what << ": " << glideShimGetLastErrorMessage();
       EXPECT_EQ(info.writeMode, c.mode) << what;
-      EXPECT_EQ(info.strideInBytes, static_cast<FxU32>(kW * c.bytes)) << what;
+      EXPECT_EQ(info.strideInBytes, static_cast<FxU32>(kFormatsWidth * c.bytes)) << what;
       // Three pixels along row 5 (from the lock's origin) at x 10..12, as a source region would give them.
       std::vector<std::uint8_t> source(static_cast<std::size_t>(3 * c.bytes));
       for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<std::uint8_t>(0x35 + 29 * i);
@@ -103,10 +103,10 @@ TEST_F(LfbFormatsTest, WriteLocksInEveryModeChangeOnlyThePixelsWritten) {
       ASSERT_TRUE(grLfbUnlock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER)) << what;
 
       // The same three pixels through grLfbWriteRegion into a copy, for the expected words.
-      const int row = origin == GR_ORIGIN_UPPER_LEFT ? 5 : kH - 1 - 5;
+      const int row = origin == GR_ORIGIN_UPPER_LEFT ? 5 : kFormatsHeight - 1 - 5;
       const std::vector<FxU16> got_color = read_buffer(GR_BUFFER_BACKBUFFER), got_depth = read_buffer(GR_BUFFER_AUXBUFFER);
-      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, const_cast<FxU16 *>(background.data())));
-      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kW, kH, kW * 2, const_cast<FxU16 *>(depth.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kFormatsWidth, kFormatsHeight, kFormatsWidth * 2, const_cast<FxU16 *>(background.data())));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kFormatsWidth, kFormatsHeight, kFormatsWidth * 2, const_cast<FxU16 *>(depth.data())));
       ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 10, static_cast<FxU32>(row), c.mode, 3, 1, 3 * c.bytes, source.data()));
       EXPECT_EQ(got_color, read_buffer(GR_BUFFER_BACKBUFFER)) << what;
       EXPECT_EQ(got_depth, read_buffer(GR_BUFFER_AUXBUFFER)) << what;

@@ -20,9 +20,9 @@
 
 namespace {
 
-constexpr int kW = 64, kH = 64;  // GlideWindowTest's window
+constexpr int kPipelineWidth = 64, kPipelineHeight = 64;  // GlideWindowTest's window
 
-std::size_t at(int x, int y) { return static_cast<std::size_t>(y * kW + x); }
+std::size_t at(int x, int y) { return static_cast<std::size_t>(y * kPipelineWidth + x); }
 
 FxU16 rgb565(int r, int g, int b) { return static_cast<FxU16>((r >> 3) << 11 | (g >> 2) << 5 | (b >> 3)); }
 
@@ -70,7 +70,7 @@ TEST_F(LfbPipelineTest, DepthTestKeepsPixelsInFrontOfATriangleAndRejectsThoseBeh
   grDepthMask(FXTRUE);
   grBufferClear(0, 0, 0xFFFF);
   guColorCombineFunction(GR_COLORCOMBINE_ITRGB);
-  draw_depth_rect(0, 0, 32, kH, 30000.0f, 0, 0, 255);  // blue, depth code 30000 on the left half
+  draw_depth_rect(0, 0, 32, kPipelineHeight, 30000.0f, 0, 0, 255);  // blue, depth code 30000 on the left half
   const FxU16 red = 0xF800;
   // Rows 10..19: columns 0..15 at code 20000 (in front of the triangle), 16..47 at 40000
   // (behind it where it is drawn, in front of the cleared 0xFFFF beyond it).
@@ -83,8 +83,8 @@ TEST_F(LfbPipelineTest, DepthTestKeepsPixelsInFrontOfATriangleAndRejectsThoseBeh
   grSstPerfStats(&stats);
   const std::vector<FxU16> color = read_buffer(), depth = read_buffer(GR_BUFFER_AUXBUFFER);
   int front = 0, behind = 0, beyond = 0, wrong = 0;
-  for (int y = 0; y < kH; ++y) {
-    for (int x = 0; x < kW; ++x) {
+  for (int y = 0; y < kPipelineHeight; ++y) {
+    for (int x = 0; x < kPipelineWidth; ++x) {
       const bool written = y >= 10 && y < 20 && x < 48;
       FxU16 want_color = x < 32 ? 0x001F : 0, want_depth = x < 32 ? 30000 : 0xFFFF;
       if (written && x < 16) want_color = red, want_depth = 20000, ++front;
@@ -221,8 +221,8 @@ TEST_F(LfbPipelineTest, Za16PipelineWritesDepthOnlyThroughTheDepthTest) {
 
 TEST_F(LfbPipelineTest, ConstantAlphaBlendsModesWithoutAlphaAndTheDataAlphaOthers) {
   const FxU16 background = rgb565(40, 200, 96);
-  std::vector<FxU16> fill(kW * kH, background);
-  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, fill.data()));
+  std::vector<FxU16> fill(kPipelineWidth * kPipelineHeight, background);
+  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kPipelineWidth, kPipelineHeight, kPipelineWidth * 2, fill.data()));
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE, GR_BLEND_ZERO);
   const voodoo_ref::Rgba source{248, 64, 16, 0};  // 565-exact: 888 data truncates to itself
   const FxU32 rgb = 248u << 16 | 64u << 8 | 16u;
@@ -319,14 +319,14 @@ TEST_F(LfbPipelineTest, FogTableIsIndexedByTheWrittenDepthCode) {
   const int c_r = 33, c_g = 65, c_b = 99;  // 565 (4, 16, 12) widened by bit replication
   const FxU16 color = rgb565(c_r, c_g, c_b);
   std::vector<FxU16> codes;
-  for (int x = 0; x < kW; ++x) codes.push_back(static_cast<FxU16>(x * 1031 + 7));
+  for (int x = 0; x < kPipelineWidth; ++x) codes.push_back(static_cast<FxU16>(x * 1031 + 7));
   codes.back() = 0xFFFF;
   pipeline_write(GR_LFBWRITEMODE_565_DEPTH, [&](std::uint8_t *base, FxU32 stride) {
-    for (int x = 0; x < kW; ++x) put32(base, stride, x, 7, FxU32{codes[static_cast<std::size_t>(x)]} << 16 | color);
+    for (int x = 0; x < kPipelineWidth; ++x) put32(base, stride, x, 7, FxU32{codes[static_cast<std::size_t>(x)]} << 16 | color);
   });
   const std::vector<FxU16> frame = read_buffer();
   int wrong = 0, fogged = 0;
-  for (int x = 0; x < kW; ++x) {
+  for (int x = 0; x < kPipelineWidth; ++x) {
     const int blend = table_blend(table, codes[static_cast<std::size_t>(x)]);
     const int r = fog_channel(c_r, 0xF0, blend), g = fog_channel(c_g, 0xF0, blend), b = fog_channel(c_b, 0xF0, blend);
     const FxU16 want = rgb565(r, g, b), got = frame[at(x, 7)];
@@ -337,7 +337,7 @@ TEST_F(LfbPipelineTest, FogTableIsIndexedByTheWrittenDepthCode) {
     }
   }
   EXPECT_EQ(wrong, 0);
-  EXPECT_GT(fogged, kW / 2) << "the fog changed most written pixels";
+  EXPECT_GT(fogged, kPipelineWidth / 2) << "the fog changed most written pixels";
   EXPECT_EQ(frame[at(0, 6)], 0) << "unwritten pixels are not fogged";
   // Iterated-Z fog takes the code's top 8 bits as the blend.
   grFogMode(GR_FOG_WITH_ITERATED_Z);
@@ -354,20 +354,20 @@ TEST_F(LfbPipelineTest, UntouchedPixelsAndTheOtherBufferAreUnchanged) {
   grDepthBufferMode(GR_DEPTHBUFFER_ZBUFFER);
   grDepthBufferFunction(GR_CMP_ALWAYS);
   grDepthMask(FXTRUE);
-  std::vector<FxU16> pattern(kW * kH), codes(kW * kH);
+  std::vector<FxU16> pattern(kPipelineWidth * kPipelineHeight), codes(kPipelineWidth * kPipelineHeight);
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     pattern[i] = static_cast<FxU16>(i * 2654435761u >> 7);
     codes[i] = static_cast<FxU16>(i * 40503u + 11);
   }
-  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kW, kH, kW * 2, pattern.data()));
-  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kW, kH, kW * 2, codes.data()));
+  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, GR_LFB_SRC_FMT_565, kPipelineWidth, kPipelineHeight, kPipelineWidth * 2, pattern.data()));
+  ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_AUXBUFFER, 0, 0, GR_LFB_SRC_FMT_ZA16, kPipelineWidth, kPipelineHeight, kPipelineWidth * 2, codes.data()));
   const std::vector<FxU16> front = read_buffer(GR_BUFFER_FRONTBUFFER);
   for (GrOriginLocation_t origin : {GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT}) {
     pipeline_write(GR_LFBWRITEMODE_565_DEPTH, [](std::uint8_t *base, FxU32 stride) {
       put32(base, stride, 5, 6, 0x12340000u | 0xABCD);
       put32(base, stride, 60, 63, 0x56780000u | 0x0F0F);
     }, origin);
-    const int top6 = origin == GR_ORIGIN_UPPER_LEFT ? 6 : kH - 1 - 6, top63 = origin == GR_ORIGIN_UPPER_LEFT ? 63 : 0;
+    const int top6 = origin == GR_ORIGIN_UPPER_LEFT ? 6 : kPipelineHeight - 1 - 6, top63 = origin == GR_ORIGIN_UPPER_LEFT ? 63 : 0;
     pattern[at(5, top6)] = 0xABCD, codes[at(5, top6)] = 0x1234;
     pattern[at(60, top63)] = 0x0F0F, codes[at(60, top63)] = 0x5678;
     EXPECT_EQ(read_buffer(), pattern) << "origin " << origin;
@@ -391,7 +391,7 @@ TEST_F(LfbPipelineTest, ClipWindowAndColourMaskApplyToPipelineWritesOnly) {
   put16(static_cast<std::uint8_t *>(info.lfbPtr), info.strideInBytes, 2, 12, 0x1111);
   ASSERT_TRUE(grLfbUnlock(GR_LFB_WRITE_ONLY, GR_BUFFER_BACKBUFFER));
   EXPECT_EQ(pixel(2, 12), 0x1111);
-  grClipWindow(0, 0, kW, kH);
+  grClipWindow(0, 0, kPipelineWidth, kPipelineHeight);
   grColorMask(FXFALSE, FXFALSE);
   pipeline_write(GR_LFBWRITEMODE_565, [](std::uint8_t *base, FxU32 stride) { put16(base, stride, 3, 12, 0x2222); });
   EXPECT_EQ(pixel(3, 12), 0) << "the colour mask off keeps the colour";
@@ -457,23 +457,23 @@ TEST_F(LfbPipelineTest, EveryLaneOrderGivesTheSamePictureForItsOwnData) {
     for (GrColorFormat_t lanes : {GR_COLORFORMAT_ARGB, GR_COLORFORMAT_ABGR, GR_COLORFORMAT_RGBA, GR_COLORFORMAT_BGRA}) {
       grLfbWriteColorFormat(lanes);
       grBufferClear(0, 0, 0);
-      std::vector<std::uint8_t> data(static_cast<std::size_t>(kW * 4 * bytes));
-      for (int i = 0; i < kW * 4; ++i) {
+      std::vector<std::uint8_t> data(static_cast<std::size_t>(kPipelineWidth * 4 * bytes));
+      for (int i = 0; i < kPipelineWidth * 4; ++i) {
         const FxU32 word = place(mode, lanes, i * 37 & 0xFF, i * 91 & 0xFF, i * 13 & 0xFF, i & 1 ? 0xFF : 0x00);
         std::memcpy(data.data() + static_cast<std::size_t>(i * bytes), &word, static_cast<std::size_t>(bytes));
       }
       // Direct (grLfbWriteRegion) into rows 0..3, through the pipeline into rows 8..11.
-      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, static_cast<GrLfbSrcFmt_t>(mode), kW, 4, kW * bytes, data.data()));
+      ASSERT_TRUE(grLfbWriteRegion(GR_BUFFER_BACKBUFFER, 0, 0, static_cast<GrLfbSrcFmt_t>(mode), kPipelineWidth, 4, kPipelineWidth * bytes, data.data()));
       pipeline_write(mode, [&](std::uint8_t *base, FxU32 stride) {
         for (int y = 0; y < 4; ++y)
-          std::memcpy(base + (8 + y) * stride, data.data() + static_cast<std::size_t>(y * kW * bytes), static_cast<std::size_t>(kW * bytes));
+          std::memcpy(base + (8 + y) * stride, data.data() + static_cast<std::size_t>(y * kPipelineWidth * bytes), static_cast<std::size_t>(kPipelineWidth * bytes));
       });
       const std::vector<FxU16> frame = read_buffer();
       if (lanes == GR_COLORFORMAT_ARGB) {
         reference = frame;
         int lit = 0;
         for (FxU16 p : frame) lit += p != 0;
-        EXPECT_GT(lit, kW * 4) << "mode " << mode << ": both writes drew";
+        EXPECT_GT(lit, kPipelineWidth * 4) << "mode " << mode << ": both writes drew";
       } else {
         EXPECT_EQ(frame, reference) << "mode " << mode << " lanes " << lanes;
       }

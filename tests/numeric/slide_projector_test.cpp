@@ -12,13 +12,13 @@
 
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kSlideWidth = 160, kSlideHeight = 120;
 
 class SlideProjectorTest : public ::testing::Test {
  protected:
   void SetUp() override {
     grGlideInit();
-    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
+    ASSERT_TRUE(glideShimSetWindowSize(kSlideWidth, kSlideHeight));
     ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
                              GR_ORIGIN_UPPER_LEFT, 2, 1));
   }
@@ -26,7 +26,7 @@ class SlideProjectorTest : public ::testing::Test {
 
   static gs::Scene floor_under_projector(const glm::vec3 &albedo) {
     gs::Scene scene;
-    scene.width = kWidth, scene.height = kHeight;
+    scene.width = kSlideWidth, scene.height = kSlideHeight;
     scene.ambient = glm::vec3(0.25f);
     gs::SceneObject floor;
     floor.name = "floor";
@@ -47,8 +47,8 @@ class SlideProjectorTest : public ::testing::Test {
 
   static std::vector<FxU16> render(const gs::Scene &scene) {
     gs::render_scene(scene, gs::project_scene(scene));
-    std::vector<FxU16> frame(kWidth * kHeight);
-    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, frame.data());
+    std::vector<FxU16> frame(kSlideWidth * kSlideHeight);
+    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kSlideWidth, kSlideHeight, kSlideWidth * 2, frame.data());
     return frame;
   }
 };
@@ -58,13 +58,13 @@ TEST_F(SlideProjectorTest, PixelsFollowThePassEquations) {
   // lit green saturates the sum, then x 1 -> 63; dark red = 0.5 x 0.25 -> ~31 -> 3.
   const std::vector<FxU16> frame = render(floor_under_projector({0.5f, 1.0f, 1.0f}));
   int lit = 0, dark = 0, centre_lit = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
-      const FxU16 p = frame[static_cast<std::size_t>(y * kWidth + x)];
+  for (int y = 0; y < kSlideHeight; ++y) {
+    for (int x = 0; x < kSlideWidth; ++x) {
+      const FxU16 p = frame[static_cast<std::size_t>(y * kSlideWidth + x)];
       const int r = p >> 11, g = p >> 5 & 0x3F;
       if (std::abs(r - 15) <= 1 && g >= 62) {
         ++lit;
-        centre_lit += std::abs(x - kWidth / 2) < 20 && std::abs(y - kHeight / 2) < 20;
+        centre_lit += std::abs(x - kSlideWidth / 2) < 20 && std::abs(y - kSlideHeight / 2) < 20;
       }
       dark += std::abs(r - 3) <= 1 && std::abs(g - 15) <= 1;
     }
@@ -73,14 +73,14 @@ TEST_F(SlideProjectorTest, PixelsFollowThePassEquations) {
   // between cells 4-5 px wide, leaves a few hundred exactly lit pixels.
   EXPECT_GT(lit, 150) << "no lit checker cells, or wrong lit value";
   EXPECT_GT(centre_lit, 100) << "lit cells not under the projector";
-  EXPECT_GT(dark, kWidth * kHeight / 2) << "the ambient-only floor has the wrong value";
+  EXPECT_GT(dark, kSlideWidth * kSlideHeight / 2) << "the ambient-only floor has the wrong value";
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }
 
 TEST_F(SlideProjectorTest, OnlyWhatTheProjectorSeesIsLit) {
   // Outside the projector's 30-degree view the floor is ambient only: the image corners.
   const std::vector<FxU16> frame = render(floor_under_projector(glm::vec3(1.0f)));
-  for (int corner : {0, kWidth - 1, (kHeight - 1) * kWidth, kHeight * kWidth - 1}) {
+  for (int corner : {0, kSlideWidth - 1, (kSlideHeight - 1) * kSlideWidth, kSlideHeight * kSlideWidth - 1}) {
     EXPECT_EQ(frame[static_cast<std::size_t>(corner)] >> 11, (255 / 4) >> 3) << "corner " << corner;
   }
 }

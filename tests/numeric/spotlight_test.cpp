@@ -19,7 +19,7 @@
 
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kSpotWidth = 160, kSpotHeight = 120;
 
 gs::SpotLight spotlight(const std::string &beam) {
   gs::SpotLight light;
@@ -106,7 +106,7 @@ class SpotlightPassTest : public ::testing::Test {
  protected:
   void SetUp() override {
     grGlideInit();
-    ASSERT_TRUE(glideShimSetWindowSize(kWidth, kHeight));
+    ASSERT_TRUE(glideShimSetWindowSize(kSpotWidth, kSpotHeight));
     ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
                              GR_ORIGIN_UPPER_LEFT, 2, 1));
   }
@@ -115,7 +115,7 @@ class SpotlightPassTest : public ::testing::Test {
   // A white 12 m floor (y = 0) in `divisions` quads per side, no ambient, the camera above.
   static gs::Scene floor_scene(const gs::SpotLight &light, int divisions) {
     gs::Scene scene;
-    scene.width = kWidth, scene.height = kHeight;
+    scene.width = kSpotWidth, scene.height = kSpotHeight;
     scene.ambient = glm::vec3(0.0f);
     gs::SceneObject floor;
     floor.name = "floor";
@@ -132,8 +132,8 @@ class SpotlightPassTest : public ::testing::Test {
   // The green channel (6 bits, the finest) of every pixel, 0..1.
   static std::vector<float> render_green(const gs::Scene &scene) {
     gs::render_scene(scene, gs::project_scene(scene));
-    std::vector<FxU16> frame(kWidth * kHeight);
-    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kWidth, kHeight, kWidth * 2, frame.data());
+    std::vector<FxU16> frame(kSpotWidth * kSpotHeight);
+    grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, kSpotWidth, kSpotHeight, kSpotWidth * 2, frame.data());
     std::vector<float> green(frame.size());
     for (std::size_t i = 0; i < frame.size(); ++i)
       green[i] = static_cast<float>(frame[i] >> 5 & 0x3F) / 63.0f;
@@ -144,19 +144,19 @@ class SpotlightPassTest : public ::testing::Test {
   static void for_each_floor_point(
       const gs::Scene &scene, const std::function<void(std::size_t, const glm::vec3 &)> &visit) {
     const glm::mat4 inverse = glm::inverse(
-        gs::camera_projection(scene.camera, kWidth, kHeight) * gs::camera_view(scene.camera));
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
+        gs::camera_projection(scene.camera, kSpotWidth, kSpotHeight) * gs::camera_view(scene.camera));
+    for (int y = 0; y < kSpotHeight; ++y) {
+      for (int x = 0; x < kSpotWidth; ++x) {
         // Normalised device coordinates of the pixel centre, y up.
-        const float nx = (static_cast<float>(x) + 0.5f) / kWidth * 2.0f - 1.0f;
-        const float ny = 1.0f - (static_cast<float>(y) + 0.5f) / kHeight * 2.0f;
+        const float nx = (static_cast<float>(x) + 0.5f) / kSpotWidth * 2.0f - 1.0f;
+        const float ny = 1.0f - (static_cast<float>(y) + 0.5f) / kSpotHeight * 2.0f;
         const glm::vec4 near = inverse * glm::vec4(nx, ny, -1.0f, 1.0f);
         const glm::vec4 far = inverse * glm::vec4(nx, ny, 1.0f, 1.0f);
         const glm::vec3 a = glm::vec3(near) / near.w, b = glm::vec3(far) / far.w;
         const float t = a.y / (a.y - b.y);
         const glm::vec3 point = a + (b - a) * t;
         if (std::abs(point.x) < 5.9f && std::abs(point.z) < 5.9f)
-          visit(static_cast<std::size_t>(y * kWidth + x), point);
+          visit(static_cast<std::size_t>(y * kSpotWidth + x), point);
       }
     }
   }
@@ -186,7 +186,7 @@ TEST_F(SpotlightPassTest, FloorFollowsTheBeamMap) {
       within_two_steps += error <= 2.0f / 63.0f;
       lit += green[pixel] > 0.5f;
     });
-    ASSERT_GT(compared, kWidth * kHeight / 2);
+    ASSERT_GT(compared, kSpotWidth * kSpotHeight / 2);
     EXPECT_GT(lit, 500) << "the beam lit almost nothing";
     // Where the pattern's edges fall within a texel of the 128x128 map, bilinear filtering and
     // the pixel's own footprint blur them: a few percent of pixels, never the mean.

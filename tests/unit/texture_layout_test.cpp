@@ -21,7 +21,7 @@ namespace {
 
 using glide_shim::current;
 
-constexpr FxU32 kTmuBytes = 2u * 1024u * 1024u;
+constexpr FxU32 kTmuMemoryBytes = 2u * 1024u * 1024u;
 
 FxU32 calc(GrLOD_t small_lod, GrLOD_t large_lod, GrAspectRatio_t aspect, GrTextureFormat_t format) {
   return grTexCalcMemRequired(small_lod, large_lod, aspect, format);
@@ -182,14 +182,14 @@ TEST_F(TextureLayoutTest, AddressRangeIsTheTwoMegabyteTmu) {
   const FxU32 max = grTexMaxAddress(GR_TMU0);
   expect_no_error();
   EXPECT_EQ(min, 0u);
-  EXPECT_LT(max, kTmuBytes);
+  EXPECT_LT(max, kTmuMemoryBytes);
   EXPECT_EQ(max % 8, 0u) << "texture start addresses are 8-byte aligned";
   // As in the SST-1 driver (total_mem - 8): the smallest texture fits exactly at the top.
-  EXPECT_EQ(max + calc(GR_LOD_1, GR_LOD_1, GR_ASPECT_1x1, GR_TEXFMT_RGB_565), kTmuBytes);
+  EXPECT_EQ(max + calc(GR_LOD_1, GR_LOD_1, GR_ASPECT_1x1, GR_TEXFMT_RGB_565), kTmuMemoryBytes);
   // The hardware query agrees on the size.
   GrHwConfiguration hw;
   ASSERT_TRUE(grSstQueryHardware(&hw));
-  EXPECT_EQ(static_cast<FxU32>(hw.SSTs[0].sstBoard.VoodooConfig.tmuConfig[0].tmuRam) << 20, kTmuBytes);
+  EXPECT_EQ(static_cast<FxU32>(hw.SSTs[0].sstBoard.VoodooConfig.tmuConfig[0].tmuRam) << 20, kTmuMemoryBytes);
   // Eight 256x256 565 textures (8 * 131072 = 1 MB) fit between min and max back to back.
   EXPECT_GE(max - min + 8u, 8u * calc(GR_LOD_256, GR_LOD_256, GR_ASPECT_1x1, GR_TEXFMT_RGB_565));
 }
@@ -206,7 +206,7 @@ TEST_F(TextureLayoutTest, DownloadsAtTheEndsOfTheRangeLandInTmuMemory) {
   grTexSource(GR_TMU0, max, GR_MIPMAPLEVELMASK_BOTH, &top_info);
   expect_no_error();
   const std::vector<std::uint8_t> &memory = current().tmu.memory;
-  ASSERT_EQ(memory.size(), kTmuBytes);
+  ASSERT_EQ(memory.size(), kTmuMemoryBytes);
   // Little-endian words, byte for byte.
   EXPECT_EQ(memory[max], 0x11);
   EXPECT_EQ(memory[max + 7], 0x44);
