@@ -54,8 +54,9 @@ install_missing_packages() {
 
 # Unity builds (CMAKE_UNITY_BUILD): each target's sources compiled in batches of 8, so the
 # headers every file includes (GoogleTest, CLI11, GLM, nlohmann-json) are parsed and their inline
-# code compiled once per batch, not once per file. A whole build then takes about half the
-# CPU time. A name defined in two files of one target (even in an anonymous namespace) stops it
+# code compiled once per batch, not once per file: the whole Release build took 469 s of CPU
+# at 80075e0 against 830 s file by file at a4015e2. A name defined in two files of one target
+# (even in an anonymous namespace) stops it
 # with a "redefinition" error: give it a name of its own, or share one definition.
 build() {
   install_missing_packages
