@@ -56,8 +56,8 @@ install_missing_packages() {
 # headers every file includes (GoogleTest, CLI11, GLM, nlohmann-json) are parsed and their inline
 # code compiled once per batch, not once per file: the whole Release build took 469 s of CPU
 # at 80075e0 against 830 s file by file at a4015e2. A name defined in two files of one target
-# (even in an anonymous namespace) stops it
-# with a "redefinition" error: give it a name of its own, or share one definition.
+# (even in an anonymous namespace) stops it with a "redefinition" error: give it a name of its
+# own, or share one definition.
 build() {
   install_missing_packages
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON > build.log 2>&1 ||
