@@ -126,44 +126,50 @@ export_sanitizer_options() {
 }
 
 # The fuzz targets (fuzz/), in the sanitizer build: only they and what they link are built.
-FUZZ_TARGETS=(glide_api_fuzz scene_file_fuzz obj_fuzz)
+PARSER_FUZZ_TARGETS=(scene_file_fuzz obj_fuzz)
+FUZZ_TARGETS=(glide_api_fuzz "${PARSER_FUZZ_TARGETS[@]}")
 
 # Each target starts from the checked-in seeds (read only) and writes what it finds new to
 # build-asan/fuzz-corpus/<target>/; a crashing input is saved in build-asan/fuzz-artifacts/.
 # The mutation seed is fixed (FUZZ_SEED, default 1) so that CI explores the same inputs on
-# every run; set another seed to explore further by hand.
+# every run; set another seed to explore further by hand. Returns non-zero on a finding.
+fuzz_one() {
+  local target=$1 time=$2
+  shift 2
+  mkdir -p "build-asan/fuzz-corpus/$target"
+  echo "run.sh: fuzzing $target for ${time}s"
+  if ! "build-asan/fuzz/$target" -seed="${FUZZ_SEED:-1}" -max_total_time="$time" -timeout=60 \
+      -rss_limit_mb=4096 "$@" -print_final_stats=1 -artifact_prefix="build-asan/fuzz-artifacts/$target-" \
+      "build-asan/fuzz-corpus/$target" "fuzz/corpus/$target" > "build-asan/$target.log" 2>&1; then
+    echo "run.sh: $target found an input that fails (build-asan/$target.log):"
+    tail -40 "build-asan/$target.log"
+    return 1
+  fi
+  echo "run.sh: $target: $(grep -E '^stat::(number_of_executed_units|average_exec_per_sec)' \
+    "build-asan/$target.log" | tr '\n' ' ')"
+}
+
+# Each fuzzer is one single-threaded process (llvmpipe has no threads here), so on a machine
+# with two cores the API fuzzer runs on one while the two parser fuzzers take turns on the
+# other: the run takes the API fuzzer's time, not the sum, and each fuzzer still gets a core.
 run_fuzzers() {
   local seconds=${FUZZ_SECONDS:-60}
-  local seed=${FUZZ_SEED:-1}
   local failed=()
   export_sanitizer_options
   mkdir -p build-asan/fuzz-artifacts
-  for target in "${FUZZ_TARGETS[@]}"; do
-    mkdir -p "build-asan/fuzz-corpus/$target"
-    local time=$seconds options=()
-    if [ "$target" = glide_api_fuzz ]; then
-      time=${FUZZ_API_SECONDS:-$seconds}
-      # No leak check after each input (the sanitized test suite checks the shim's leaks):
-      # the GL stack keeps what an input compiled (shaders, by design, for the next inputs),
-      # so nearly every input looked like a possible leak and libFuzzer stopped the world to
-      # scan the whole heap after it, a third of the run's time. Mesa's shader cache (in
-      # build-asan/, never in the home directory) spares an input with a window of its own
-      # size recompiling what the run already compiled.
-      options=(-detect_leaks=0)
-      export MESA_SHADER_CACHE_DISABLE=false MESA_SHADER_CACHE_DIR="$PWD/build-asan/fuzz-shader-cache"
-    fi
-    echo "run.sh: fuzzing $target for ${time}s"
-    if ! "build-asan/fuzz/$target" -seed="$seed" -max_total_time="$time" -timeout=60 -rss_limit_mb=4096 \
-        "${options[@]}" -print_final_stats=1 -artifact_prefix="build-asan/fuzz-artifacts/$target-" \
-        "build-asan/fuzz-corpus/$target" "fuzz/corpus/$target" > "build-asan/$target.log" 2>&1; then
-      tail -40 "build-asan/$target.log"
-      failed+=("$target")
-    else
-      grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done)" \
-        "build-asan/$target.log" || true
-    fi
-    export MESA_SHADER_CACHE_DISABLE=true
+  # No leak check after each input (the sanitized test suite checks the shim's leaks): the GL
+  # stack keeps what an input compiled (shaders, by design, for the next inputs), so nearly
+  # every input looked like a possible leak and libFuzzer stopped the world to scan the whole
+  # heap after it, a third of the run's time. Mesa's shader cache (in build-asan/, never in the
+  # home directory) spares an input with a window of its own size recompiling what the run
+  # already compiled.
+  MESA_SHADER_CACHE_DISABLE=false MESA_SHADER_CACHE_DIR="$PWD/build-asan/fuzz-shader-cache" \
+    fuzz_one glide_api_fuzz "${FUZZ_API_SECONDS:-$seconds}" -detect_leaks=0 &
+  local api_fuzzer=$!
+  for target in "${PARSER_FUZZ_TARGETS[@]}"; do
+    fuzz_one "$target" "$seconds" || failed+=("$target")
   done
+  wait "$api_fuzzer" || failed+=(glide_api_fuzz)
   if [ ${#failed[@]} -gt 0 ]; then
     echo "run.sh: findings in ${failed[*]} (inputs in build-asan/fuzz-artifacts/, logs in build-asan/)" >&2
     exit 1
