@@ -26,11 +26,26 @@ if(GLIDESHADOWS_SANITIZE)
   endif()
   # The options the runs need (stop at the first report, suppress only the uninstrumented
   # Mesa/LLVM stack's leaks) are exported by run.sh (`sanitize`, `fuzz`) before ctest or the
-  # fuzzers start; ctest's ENVIRONMENT cannot carry them through gtest_discover_tests, which
-  # splits a list property.
+  # fuzzers start, so that a test program run by hand in build-asan/ gets them the same way.
 endif()
 
-if(GLIDESHADOWS_FUZZ)
-  # Coverage feedback from every library; the fuzz targets add -fsanitize=fuzzer when linking.
-  add_compile_options(-fsanitize=fuzzer-no-link)
-endif()
+# libFuzzer's coverage feedback, for the code a fuzz target links: the shim and the rooms of
+# src/ (glideshadows_fuzz_coverage, called on each); the fuzz targets add -fsanitize=fuzzer.
+function(glideshadows_fuzz_coverage target)
+  if(GLIDESHADOWS_FUZZ)
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
+endfunction()
+
+# The command-line tool and the demo (glideshadows_driver_code, called on each): in the
+# sanitizer build they only drive the code the tests aim at, and are compiled at -O0. Every
+# check is the same (the sanitizers instrument each load, store and operation at any level),
+# the compile takes well under half the time (CLI11's templates are most of it), and what the
+# programs spend their time in (the shim, the techniques, llvmpipe) stays at -O2. Other builds
+# keep their flags: these are the programs people run. (The test programs are -O0 in every
+# build: tests/CMakeLists.txt.)
+function(glideshadows_driver_code target)
+  if(GLIDESHADOWS_SANITIZE)
+    target_compile_options(${target} PRIVATE -O0)
+  endif()
+endfunction()
