@@ -49,7 +49,9 @@ float vertex_depth(const DepthState &depth, float ooz, float oow) {
   const float bias = compares_to_bias(depth.mode) ? 0.0f : static_cast<float>(depth.bias_level);
   if (is_w_buffer(depth.mode)) {
     // A bias of b codes moves w by 2^(b/4096), i.e. scales 1/w by 2^(-b/4096): still affine.
-    return std::clamp(std::min(oow, 1.0f) * std::exp2(-bias / 4096.0f), 0.0f, 1.0f);
+    // Without a bias the scale is exactly 1 (most draws): no exp2f per vertex.
+    const float unbiased = std::min(oow, 1.0f);
+    return std::clamp(bias == 0.0f ? unbiased : unbiased * std::exp2(-bias / 4096.0f), 0.0f, 1.0f);
   }
   return std::clamp((ooz + bias) / 65535.0f, 0.0f, 1.0f);
 }

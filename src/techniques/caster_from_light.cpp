@@ -10,9 +10,8 @@
 #include <glideutl.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -22,6 +21,62 @@ namespace gs {
 namespace {
 
 constexpr GrColor_t kShadowRedArgb = 0x00F00000u;  // red 240: the 565 red field 11110b
+
+// Per vertex, an id its exactly equal positions share (model space; +0 and -0 are equal), so
+// that vertices split for normals join; a non-finite position keeps an id of its own.
+std::vector<unsigned> position_ids(const std::vector<glm::vec3> &positions) {
+  std::vector<unsigned> order, ids(positions.size());
+  for (unsigned i = 0; i < positions.size(); ++i) {
+    const glm::vec3 &p = positions[i];
+    ids[i] = i;
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) order.push_back(i);
+  }
+  std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+    const glm::vec3 &p = positions[a], &q = positions[b];
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (positions[order[k]] == positions[order[k - 1]]) ids[order[k]] = ids[order[k - 1]];
+  }
+  return ids;
+}
+
+// Per walk of a triangle's edge (triangle k's ab, bc, ca at 3k, 3k + 1, 3k + 2), whether the
+// edge is on the caster's silhouette from the light: between a triangle facing the light and
+// one facing away, or on one triangle only (an open mesh's rim). Edges are joined by their
+// ends' positions (position_ids); facing is in light view space, with the light at the origin.
+std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view) {
+  const std::vector<unsigned> ids = position_ids(mesh.positions);
+  struct EdgeWalk {
+    std::uint64_t edge;  // lower id << 32 | higher id
+    bool facing;
+    std::size_t walk;
+  };
+  std::vector<EdgeWalk> walks;
+  walks.reserve(mesh.triangles.size() * 3);
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
+    const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
+    for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      const std::uint64_t low = std::min(ids[end.first], ids[end.second]);
+      const std::uint64_t high = std::max(ids[end.first], ids[end.second]);
+      walks.push_back({low << 32 | high, facing, walks.size()});
+    }
+  }
+  std::sort(walks.begin(), walks.end(),
+            [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
+  std::vector<bool> silhouette(walks.size(), false);
+  for (std::size_t first = 0, end = 0; first < walks.size(); first = end) {
+    int facing = 0;
+    for (end = first; end < walks.size() && walks[end].edge == walks[first].edge; ++end) {
+      facing += walks[end].facing;
+    }
+    const int count = static_cast<int>(end - first);
+    const bool on_silhouette = count == 1 || (facing > 0 && facing < count);
+    for (std::size_t k = first; k < end; ++k) silhouette[walks[k].walk] = on_silhouette;
+  }
+  return silhouette;
+}
 
 }  // namespace
 
@@ -111,33 +166,17 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
       view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)] = true;
     }
   };
-  // The caster's silhouette from the light: edges (keyed by their ends' model positions, so
-  // vertices split for normals still join) between a triangle facing the light and one facing
-  // away, or on one triangle only (an open mesh's rim). Facing in light view space, where the
-  // light is at the origin.
-  std::map<std::array<float, 6>, std::pair<int, int>> edges;  // facing the light, triangles
-  for (const glm::uvec3 &t : mesh.triangles) {
-    const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
-    const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
+  // The caster's silhouette from the light (silhouette_walks), traced from the lower end of
+  // each edge by model position.
+  const std::vector<bool> silhouette = silhouette_walks(mesh, in_view);
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const glm::uvec3 &t = mesh.triangles[k];
     const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
-    for (const auto &end : ends) {
-      glm::vec3 p = mesh.positions[end[0]], q = mesh.positions[end[1]];
-      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q);
-      std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
-      edge.first += facing;
-      edge.second += 1;
-    }
-  }
-  std::map<std::array<float, 6>, unsigned> first_index;  // an end's vertex index, per position
-  for (const glm::uvec3 &t : mesh.triangles) {
-    const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
-    for (const auto &end : ends) {
-      unsigned i = end[0], j = end[1];
-      glm::vec3 p = mesh.positions[i], q = mesh.positions[j];
-      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q), std::swap(i, j);
-      const std::pair<int, int> &edge = edges[{p.x, p.y, p.z, q.x, q.y, q.z}];
-      const bool silhouette = edge.second == 1 || (edge.first > 0 && edge.first < edge.second);
-      if (!silhouette) continue;
+    for (int e = 0; e < 3; ++e) {
+      if (!silhouette[3 * k + static_cast<std::size_t>(e)]) continue;
+      unsigned i = ends[e][0], j = ends[e][1];
+      const glm::vec3 &p = mesh.positions[i], &q = mesh.positions[j];
+      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(i, j);
       // The part of the edge inside the caster planes (light view space, parametric clip).
       float from = 0.0f, to = 1.0f;
       for (const glm::vec4 &plane : view.caster_planes) {

@@ -10,6 +10,10 @@ namespace gs {
 
 void clip_polygon(std::vector<ClipVertex> &polygon, const glm::vec4 &plane,
                   std::vector<ClipVertex> &scratch) {
+  // Wholly inside (most calls): the loop below would copy every vertex as it is.
+  bool inside = true;
+  for (const ClipVertex &v : polygon) inside = inside && glm::dot(plane, v.clip) >= 0.0f;
+  if (inside) return;
   scratch.clear();
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {

@@ -129,13 +129,37 @@ FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
   return space;
 }
 
+// LightView::silhouette by rows: per row of fine cells and column x, the first silhouette
+// column at or after x and the last at or before it (kFineCells and -1 when there is none), so
+// that a box's silhouette cells are bounded in a step per row.
+struct SilhouetteRows {
+  static constexpr int kSide = LightView::kFineCells;
+  std::vector<int> next, previous;  // [row * (kSide + 1) + x]
+  explicit SilhouetteRows(const LightView &view)
+      : next(static_cast<std::size_t>(kSide * (kSide + 1)), kSide),
+        previous(static_cast<std::size_t>(kSide * (kSide + 1)), -1) {
+    for (int y = 0; y < kSide; ++y) {
+      int *row_next = &next[static_cast<std::size_t>(y * (kSide + 1))];
+      int *row_previous = &previous[static_cast<std::size_t>(y * (kSide + 1))];
+      for (int x = kSide - 1; x >= 0; --x) {
+        row_next[x] = view.silhouette[static_cast<std::size_t>(y * kSide + x)] ? x : row_next[x + 1];
+      }
+      for (int x = 0; x < kSide; ++x) {
+        const int before = x > 0 ? row_previous[x - 1] : -1;
+        row_previous[x] = view.silhouette[static_cast<std::size_t>(y * kSide + x)] ? x : before;
+      }
+    }
+  }
+};
+
 // The world-space planes of the rectangle (in the texture) around the silhouette's cells
 // (LightView::silhouette: where the shadow's edge can lie; deep inside a shadow the texels' size
 // moves no edge) that a receiver polygon, given by its light clip coordinates (all w > 0), can
 // see: those within its texel box widened by bilinear filtering's reach, as in
 // reaches_covered_cell. Outside it no shadow edge falls on the polygon. False when none.
-bool edge_rectangle(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
-                    const glm::mat4 &world_to_light_clip, std::vector<glm::vec4> &planes) {
+bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm::vec4 *light_clip,
+                    std::size_t count, const glm::mat4 &world_to_light_clip,
+                    std::vector<glm::vec4> &planes) {
   constexpr float kReachTexels = 1.5f;
   glm::vec2 low(INFINITY), high(-INFINITY);
   for (std::size_t i = 0; i < count; ++i) {
@@ -149,11 +173,13 @@ bool edge_rectangle(const LightView &view, const glm::vec4 *light_clip, std::siz
     return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kFineCells - 1);
   };
   int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
+  const int box_x0 = index(low.x - kReachTexels), box_x1 = index(high.x + kReachTexels);
   for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
-    for (int x = index(low.x - kReachTexels); x <= index(high.x + kReachTexels); ++x) {
-      if (!view.silhouette[static_cast<std::size_t>(y * LightView::kFineCells + x)]) continue;
-      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-    }
+    const auto row = static_cast<std::size_t>(y * (SilhouetteRows::kSide + 1));
+    const int first = rows.next[row + static_cast<std::size_t>(box_x0)];
+    if (first > box_x1) continue;  // no silhouette cell in the box on this row
+    const int last = rows.previous[row + static_cast<std::size_t>(box_x1)];
+    x0 = std::min(x0, first), x1 = std::max(x1, last), y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
   if (x1 < 0) return false;
   // Light NDC of the rectangle's sides, a texel wider (bilinear's reach; rows run down, y up).
@@ -198,6 +224,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   }
   const LightBeam &beam = view.beam;
   const FootprintSpace footprint = footprint_space(scene, frame, view);
+  const SilhouetteRows silhouette_rows(view);
   std::vector<ClipVertex> polygon, scratch, footprint_polygon;
   std::vector<glm::vec4> footprint_planes;
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
@@ -206,7 +233,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                const glm::vec3 *const *corners, const glm::vec4 *corners_clip,
                                std::size_t count) {
     footprint_planes = footprint.planes;
-    if (!edge_rectangle(view, corners_clip, count, light_clip, footprint_planes)) return;
+    if (!edge_rectangle(view, silhouette_rows, corners_clip, count, light_clip, footprint_planes)) {
+      return;
+    }
     footprint_polygon.clear();
     for (std::size_t k = 0; k < count; ++k) {
       footprint_polygon.push_back({glm::vec4(*corners[k], 1.0f), *corners[k], {}});
