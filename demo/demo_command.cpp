@@ -8,8 +8,6 @@
 
 #include <glide.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -80,16 +78,18 @@ int run_demo(const DemoOptions &o) {
   for (const std::string &line : table) std::printf("%s\n", line.c_str());
   if (o.sheet) {
     const std::string path = (std::filesystem::path(o.out_dir) / "contact_sheet.png").string();
-    if (!media::write_contact_sheet(run.frame_files, path)) {
-      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), OIIO::geterror().c_str());
+    std::string error;
+    if (!media::write_contact_sheet(run.frame_files, path, error)) {
+      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), error.c_str());
       return 1;
     }
     std::printf("contact sheet: %s\n", path.c_str());
   }
   if (o.gif) {
     const std::string path = (std::filesystem::path(o.out_dir) / "fight.gif").string();
-    if (!media::write_gif(run.frame_files, path, o.fps)) {
-      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), OIIO::geterror().c_str());
+    std::string error;
+    if (!media::write_gif(run.frame_files, path, o.fps, error)) {
+      std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), error.c_str());
       return 1;
     }
     std::printf("animated GIF: %s\n", path.c_str());

@@ -5,8 +5,6 @@
 #include "media/media.h"
 #include "scene/scene.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -30,14 +28,14 @@ int run_truth(const TruthOptions &o) {
     std::fprintf(stderr, "glideshadows truth: %s\n", error.c_str());
     return 1;
   }
-  if (!media::write_mask_png(o.mask, truth.width, truth.height, truth.shadow)) {
-    std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", o.mask.c_str(), OIIO::geterror().c_str());
+  if (!media::write_mask_png(o.mask, truth.width, truth.height, truth.shadow, error)) {
+    std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", o.mask.c_str(), error.c_str());
     return 1;
   }
   std::printf("mask: %s (white: a light blocked by another object)\n", o.mask.c_str());
   if (!o.image.empty()) {
-    if (!media::write_rgb_png(o.image, truth.width, truth.height, truth.rgb)) {
-      std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", o.image.c_str(), OIIO::geterror().c_str());
+    if (!media::write_rgb_png(o.image, truth.width, truth.height, truth.rgb, error)) {
+      std::fprintf(stderr, "glideshadows truth: cannot write %s: %s\n", o.image.c_str(), error.c_str());
       return 1;
     }
     std::printf("image: %s (exact visibility, per-pixel lighting)\n", o.image.c_str());

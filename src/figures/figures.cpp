@@ -2,8 +2,8 @@
 #include "figures/figures.h"
 
 #include "figures/figures_kit.h"
+#include "media/media.h"
 
-#include <OpenImageIO/imagebuf.h>
 #include <glide.h>
 #include <glide_shim.h>
 
@@ -124,10 +124,9 @@ bool make_figure(const FigureEntry &entry, Figure &figure, std::string &error, F
 }
 
 bool write_figure_png(const FigureImage &image, const std::string &path, std::string &error) {
-  OIIO::ImageBuf buffer(OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8),
-                        const_cast<std::uint8_t *>(image.rgb.data()));
-  if (!buffer.write(path)) {
-    error = "cannot write " + path + ": " + buffer.geterror();
+  std::string why;
+  if (!media::write_rgb_png(path, image.width, image.height, image.rgb, why)) {
+    error = "cannot write " + path + ": " + why;
     return false;
   }
   return true;

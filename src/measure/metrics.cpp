@@ -1,11 +1,11 @@
 // Mask and image error metrics (metrics.h): misclassified receiver pixels split into the ±1-pixel
 // band around the true shadow boundary and the interior, the farthest wrong pixel from that
 // boundary (exact Euclidean distance transform, Felzenszwalb & Huttenlocher 2012), and whole-image
-// mean / max / PSNR through OpenImageIO with an optional heat map of the difference.
+// mean / max / PSNR through OpenImageIO (the image files module, media/image_files.h) with an
+// optional heat map of the difference.
 #include "measure/metrics.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "media/image_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,22 +86,20 @@ void heat_colour(float t, unsigned char rgb[3]) {
     rgb[c] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(channel[c], 0.0f, 1.0f)));
 }
 
-bool read_image(const std::string &path, OIIO::ImageBuf &buf, std::string &error) {
-  buf.reset(path);
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    error = "cannot read image '" + path + "': " + buf.geterror();
+bool read_image(const media::ImageFiles &files, const std::string &path, media::FloatImage &image,
+                std::string &error) {
+  std::string why;
+  if (!files.read(path, image, why)) {
+    error = "cannot read image '" + path + "': " + why;
     return false;
   }
   return true;
 }
 
-bool write_heat_map(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const std::string &path,
-                    std::string &error) {
-  const OIIO::ImageSpec &spec = a.spec();
-  const int w = spec.width, h = spec.height, nc = spec.nchannels;
-  std::vector<float> pa(std::size_t(w) * h * nc), pb(pa.size());
-  a.get_pixels(a.roi(), OIIO::TypeDesc::FLOAT, pa.data());
-  b.get_pixels(b.roi(), OIIO::TypeDesc::FLOAT, pb.data());
+bool write_heat_map(const media::ImageFiles &files, const media::FloatImage &a,
+                    const media::FloatImage &b, const std::string &path, std::string &error) {
+  const int w = a.width, h = a.height, nc = a.channels;
+  const std::vector<float> &pa = a.pixels, &pb = b.pixels;
   std::vector<float> diff(std::size_t(w) * h, 0.0f);
   for (std::size_t i = 0; i < diff.size(); ++i)
     for (int c = 0; c < nc; ++c)
@@ -110,9 +108,9 @@ bool write_heat_map(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b, const std:
   std::vector<unsigned char> rgb(diff.size() * 3);
   for (std::size_t i = 0; i < diff.size(); ++i)
     heat_colour(largest > 0.0f ? diff[i] / largest : 0.0f, &rgb[i * 3]);
-  OIIO::ImageBuf out(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8), rgb.data());
-  if (!out.write(path, OIIO::TypeDesc::UINT8, "png")) {
-    error = "cannot write heat map '" + path + "': " + out.geterror();
+  std::string why;
+  if (!files.write_rgb(path, "png", w, h, rgb.data(), why)) {
+    error = "cannot write heat map '" + path + "': " + why;
     return false;
   }
   return true;
@@ -185,14 +183,12 @@ MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
 namespace {
 
 // OpenImageIO's comparison, its PSNR made finite for identical images.
-ImageErrors compare_buffers(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b) {
-  const OIIO::ImageBufAlgo::CompareResults r =
-      OIIO::ImageBufAlgo::compare(a, b, kFailThreshold, kFailThreshold);
+ImageErrors image_errors(const media::Difference &d) {
   ImageErrors errors;
-  errors.mean = r.meanerror;
-  errors.max = r.maxerror;
-  errors.psnr = std::isfinite(r.PSNR) ? r.PSNR : kIdenticalPsnrDb;
-  errors.pixels_over_threshold = static_cast<long>(r.nfail);
+  errors.mean = d.mean;
+  errors.max = d.max;
+  errors.psnr = std::isfinite(d.psnr) ? d.psnr : kIdenticalPsnrDb;
+  errors.pixels_over_threshold = d.over_threshold;
   return errors;
 }
 
@@ -200,42 +196,47 @@ ImageErrors compare_buffers(const OIIO::ImageBuf &a, const OIIO::ImageBuf &b) {
 
 bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
                     ImageErrors &errors, std::string &error) {
-  OIIO::ImageBuf image_a, image_b;
-  if (!read_image(a, image_a, error) || !read_image(b, image_b, error)) return false;
-  const OIIO::ImageSpec &sa = image_a.spec(), &sb = image_b.spec();
-  if (sa.width != sb.width || sa.height != sb.height || sa.nchannels != sb.nchannels) {
-    error = "images differ in size: '" + a + "' is " + std::to_string(sa.width) + "x" +
-            std::to_string(sa.height) + "x" + std::to_string(sa.nchannels) + ", '" + b + "' is " +
-            std::to_string(sb.width) + "x" + std::to_string(sb.height) + "x" +
-            std::to_string(sb.nchannels);
+  const media::ImageFiles *files = media::image_files(error);
+  if (files == nullptr) return false;
+  media::FloatImage image_a, image_b;
+  if (!read_image(*files, a, image_a, error) || !read_image(*files, b, image_b, error)) return false;
+  if (image_a.width != image_b.width || image_a.height != image_b.height ||
+      image_a.channels != image_b.channels) {
+    error = "images differ in size: '" + a + "' is " + std::to_string(image_a.width) + "x" +
+            std::to_string(image_a.height) + "x" + std::to_string(image_a.channels) + ", '" + b +
+            "' is " + std::to_string(image_b.width) + "x" + std::to_string(image_b.height) + "x" +
+            std::to_string(image_b.channels);
     return false;
   }
-  // r.error is not checked: OIIO 2.4 sets it whenever a pixel exceeds the threshold, and both
-  // images were read and matched in size above, which is all compare needs.
-  errors = compare_buffers(image_a, image_b);
-  return heat_map.empty() || write_heat_map(image_a, image_b, heat_map, error);
+  errors = image_errors(files->compare(image_a, image_b, kFailThreshold));
+  return heat_map.empty() || write_heat_map(*files, image_a, image_b, heat_map, error);
 }
 
-ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
-                        int width, int height) {
-  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  OIIO::ImageBuf image_a(spec), image_b(spec);
-  image_a.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, a.data());
-  image_b.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, b.data());
-  return compare_buffers(image_a, image_b);
+bool compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
+                 int width, int height, ImageErrors &errors, std::string &error) {
+  const std::size_t bytes = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 3;
+  if (bytes == 0 || a.size() != bytes || b.size() != bytes) {
+    error = "cannot compare images of " + std::to_string(a.size()) + " and " +
+            std::to_string(b.size()) + " bytes as " + std::to_string(width) + "x" +
+            std::to_string(height) + " RGB";
+    return false;
+  }
+  const media::ImageFiles *files = media::image_files(error);
+  if (files == nullptr) return false;
+  errors = image_errors(files->compare_rgb(a.data(), b.data(), width, height, kFailThreshold));
+  return true;
 }
 
 bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &width, int &height,
                std::string &error, bool *black_and_white) {
-  OIIO::ImageBuf buf;
-  if (!read_image(path, buf, error)) return false;
-  const OIIO::ImageSpec &spec = buf.spec();
+  const media::ImageFiles *files = media::image_files(error);
+  media::FloatImage image;
+  if (files == nullptr || !read_image(*files, path, image, error)) return false;
   // Alpha is skipped when there are colour channels: an opaque RGBA mask would otherwise be all 1.
-  const int alpha = spec.nchannels > 1 ? spec.alpha_channel : -1;
-  const int nc = spec.nchannels;
-  std::vector<float> pixels(std::size_t(spec.width) * spec.height * nc);
-  buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, pixels.data());
-  mask.assign(std::size_t(spec.width) * spec.height, 0);
+  const int alpha = image.channels > 1 ? image.alpha_channel : -1;
+  const int nc = image.channels;
+  const std::vector<float> &pixels = image.pixels;
+  mask.assign(std::size_t(image.width) * image.height, 0);
   // Two levels: black (every colour channel 0) and one grey above half shared by all other
   // pixels. `render --mask` writes its white through the shim's gamma table as 254, `truth` 255.
   bool two_levels = true;
@@ -252,8 +253,8 @@ bool read_mask(const std::string &path, std::vector<std::uint8_t> &mask, int &wi
     white = first;
   }
   if (black_and_white != nullptr) *black_and_white = two_levels;
-  width = spec.width;
-  height = spec.height;
+  width = image.width;
+  height = image.height;
   return true;
 }
 

@@ -32,14 +32,15 @@ struct ImageErrors {
   long pixels_over_threshold = 0;
 };
 
-// Compares two images of the same size through OpenImageIO; writes a heat map of the difference
-// (black: none, through red and yellow to white: the largest) when `heat_map` is not empty.
+// Compares two images of the same size through OpenImageIO (media/image_files.h); writes a heat
+// map of the difference (black: none, through red and yellow to white: the largest) when `heat_map` is not empty.
 bool compare_images(const std::string &a, const std::string &b, const std::string &heat_map,
                     ImageErrors &errors, std::string &error);
 
-// The same comparison of two 8-bit RGB images in memory (rows from the top, 3 bytes a pixel).
-ImageErrors compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
-                        int width, int height);
+// The same comparison of two 8-bit RGB images in memory (rows from the top, 3 bytes a pixel);
+// false with `error` when the sizes disagree or the image files module cannot be loaded.
+bool compare_rgb(const std::vector<std::uint8_t> &a, const std::vector<std::uint8_t> &b,
+                 int width, int height, ImageErrors &errors, std::string &error);
 
 // Reads a mask PNG (any pixel with a channel above half is 1). With `black_and_white`, also says
 // whether the image is a mask as `render --mask` and `truth` write them: every pixel either black

@@ -1,11 +1,11 @@
 // The speed-against-error scatter plot: the Pareto front, axis scaling, and the drawing with
-// OpenImageIO's ImageBufAlgo. Text uses a built-in 3x5 bitmap font (upper case, digits, a few
-// signs) because render_text's default font is missing on our machines ("Could not set default
-// font face") and a system font would make the PNG bytes depend on the machine.
+// OpenImageIO's ImageBufAlgo, through the image files module (media/image_files.h). Text uses a
+// built-in 3x5 bitmap font (upper case, digits, a few signs) because render_text's default font
+// is missing on our machines ("Could not set default font face") and a system font would make
+// the PNG bytes depend on the machine.
 #include "measure/plot.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "media/image_files.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,8 +16,6 @@
 
 namespace gs {
 namespace {
-
-namespace IBA = OIIO::ImageBufAlgo;
 
 // Image layout, in pixels: plot.h; below, where the legend and marks go.
 using namespace plot_layout;
@@ -31,6 +29,19 @@ constexpr int kTargetTicks = 5;
 
 struct Colour {
   float v[3];
+};
+
+// The image being drawn, in image pixels (x right, y down), and the module that draws on it.
+struct Painter {
+  media::RgbCanvas canvas;
+  const media::ImageFiles &files;
+  void box(int x1, int y1, int x2, int y2, const Colour &c) {
+    files.draw_box(canvas, x1, y1, x2, y2, c.v);
+  }
+  void line(int x1, int y1, int x2, int y2, const Colour &c) {
+    files.draw_line(canvas, x1, y1, x2, y2, c.v);
+  }
+  void point(int x, int y, const Colour &c) { files.draw_point(canvas, x, y, c.v); }
 };
 
 constexpr Colour kWhite{{1.0f, 1.0f, 1.0f}};
@@ -88,15 +99,15 @@ int text_width(const std::string &text, int scale) {
 }
 
 // (x, y) is the top-left corner of the first glyph, in image pixels.
-void draw_text(OIIO::ImageBuf &img, int x, int y, const std::string &text, int scale,
+void draw_text(Painter &img, int x, int y, const std::string &text, int scale,
                const Colour &colour) {
   for (char c : text) {
     const Glyph &g = glyph_for(c);
     for (int row = 0; row < 5; ++row)
       for (int col = 0; col < 3; ++col)
         if (g.rows[row] & (4 >> col))
-          IBA::render_box(img, x + col * scale, y + row * scale, x + (col + 1) * scale - 1,
-                          y + (row + 1) * scale - 1, colour.v, true);
+          img.box(x + col * scale, y + row * scale, x + (col + 1) * scale - 1,
+                          y + (row + 1) * scale - 1, colour);
     x += 4 * scale;
   }
 }
@@ -145,13 +156,13 @@ struct Mapping {
   }
 };
 
-void draw_axes(OIIO::ImageBuf &img, const Mapping &m) {
+void draw_axes(Painter &img, const Mapping &m) {
   const int x_ticks = to_px(m.x.top / m.x.step);
   for (int i = 0; i <= x_ticks; ++i) {
     const double value = i * m.x.step;
     const int x = m.px(value);
-    if (i > 0) IBA::render_line(img, x, kPlotTop, x, kPlotBottom - 1, kGrid.v);
-    IBA::render_line(img, x, kPlotBottom, x, kPlotBottom + kTickLength, kBlack.v);
+    if (i > 0) img.line(x, kPlotTop, x, kPlotBottom - 1, kGrid);
+    img.line(x, kPlotBottom, x, kPlotBottom + kTickLength, kBlack);
     const std::string label = format_tick(value, m.x.decimals);
     draw_text(img, x - text_width(label, kTextScale) / 2, kPlotBottom + kTickLength + 4, label,
               kTextScale, kBlack);
@@ -160,14 +171,14 @@ void draw_axes(OIIO::ImageBuf &img, const Mapping &m) {
   for (int i = 0; i <= y_ticks; ++i) {
     const double value = i * m.y.step;
     const int y = m.py(value);
-    if (i > 0) IBA::render_line(img, kPlotLeft + 1, y, kPlotRight, y, kGrid.v);
-    IBA::render_line(img, kPlotLeft - kTickLength, y, kPlotLeft, y, kBlack.v);
+    if (i > 0) img.line(kPlotLeft + 1, y, kPlotRight, y, kGrid);
+    img.line(kPlotLeft - kTickLength, y, kPlotLeft, y, kBlack);
     const std::string label = format_tick(value, m.y.decimals);
     draw_text(img, kPlotLeft - kTickLength - 4 - text_width(label, kTextScale), y - kTextScale * 5 / 2,
               label, kTextScale, kBlack);
   }
-  IBA::render_line(img, kPlotLeft, kPlotBottom, kPlotRight, kPlotBottom, kBlack.v);
-  IBA::render_line(img, kPlotLeft, kPlotTop, kPlotLeft, kPlotBottom, kBlack.v);
+  img.line(kPlotLeft, kPlotBottom, kPlotRight, kPlotBottom, kBlack);
+  img.line(kPlotLeft, kPlotTop, kPlotLeft, kPlotBottom, kBlack);
 
   const std::string x_name = "time (ms)";
   draw_text(img, (kPlotLeft + kPlotRight - text_width(x_name, kTextScale)) / 2, kPlotBottom + 35,
@@ -178,28 +189,27 @@ void draw_axes(OIIO::ImageBuf &img, const Mapping &m) {
 
 // ---- marks -------------------------------------------------------------------------------------
 
-void draw_square(OIIO::ImageBuf &img, int x, int y, const Colour &colour) {
-  IBA::render_box(img, x - kPointHalf, y - kPointHalf, x + kPointHalf, y + kPointHalf, colour.v,
-                  true);
+void draw_square(Painter &img, int x, int y, const Colour &colour) {
+  img.box(x - kPointHalf, y - kPointHalf, x + kPointHalf, y + kPointHalf, colour);
 }
 
 // A two-pixel-thick ring; a fixed list of integer offsets keeps the pixels deterministic.
-void draw_ring(OIIO::ImageBuf &img, int cx, int cy, const Colour &colour) {
+void draw_ring(Painter &img, int cx, int cy, const Colour &colour) {
   for (int dy = -kFrontRadius - 1; dy <= kFrontRadius + 1; ++dy)
     for (int dx = -kFrontRadius - 1; dx <= kFrontRadius + 1; ++dx) {
       const int d2 = dx * dx + dy * dy;
       if (d2 >= (kFrontRadius - 1) * (kFrontRadius - 1) && d2 <= kFrontRadius * kFrontRadius + kFrontRadius)
-        IBA::render_point(img, cx + dx, cy + dy, colour.v);
+        img.point(cx + dx, cy + dy, colour);
     }
 }
 
 // Two adjacent lines, so the front reads as heavier than the grid and the axes.
-void draw_thick_line(OIIO::ImageBuf &img, int x1, int y1, int x2, int y2, const Colour &colour) {
-  IBA::render_line(img, x1, y1, x2, y2, colour.v);
+void draw_thick_line(Painter &img, int x1, int y1, int x2, int y2, const Colour &colour) {
+  img.line(x1, y1, x2, y2, colour);
   if (std::abs(x2 - x1) >= std::abs(y2 - y1))
-    IBA::render_line(img, x1, y1 + 1, x2, y2 + 1, colour.v);
+    img.line(x1, y1 + 1, x2, y2 + 1, colour);
   else
-    IBA::render_line(img, x1 + 1, y1, x2 + 1, y2, colour.v);
+    img.line(x1 + 1, y1, x2 + 1, y2, colour);
 }
 
 // Clips a label to the space left of the image's right edge, so long names stay legible.
@@ -277,8 +287,14 @@ bool write_plot(const std::vector<PlotPoint> &points, const std::string &title,
   }
   const Mapping m{make_axis(max_time), make_axis(max_error)};
 
-  OIIO::ImageBuf img(OIIO::ImageSpec(kWidth, kHeight, 3, OIIO::TypeDesc::UINT8));
-  IBA::fill(img, kWhite.v);
+  const media::ImageFiles *files = media::image_files(error);
+  if (files == nullptr) {
+    error = "write_plot: cannot write '" + path + "': " + error;
+    return false;
+  }
+  Painter img{{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t(kWidth) * kHeight * 3)},
+              *files};
+  files->fill(img.canvas, kWhite.v);
 
   const int title_scale = text_width(title, kTitleScale) <= kWidth - 20 ? kTitleScale : kTextScale;
   draw_text(img, std::max(4, (kWidth - text_width(title, title_scale)) / 2), 10, title,
@@ -319,8 +335,9 @@ bool write_plot(const std::vector<PlotPoint> &points, const std::string &title,
   draw_text(img, kLegendX + 18, y, "pareto front", kTextScale, kBlack);
 
   // The format is named so the file is a PNG whatever the path's extension says.
-  if (!img.write(path, OIIO::TypeDesc::UINT8, "png")) {
-    error = "write_plot: cannot write '" + path + "': " + img.geterror();
+  std::string write_error;
+  if (!files->write_rgb(path, "png", kWidth, kHeight, img.canvas.rgb.data(), write_error)) {
+    error = "write_plot: cannot write '" + path + "': " + write_error;
     return false;
   }
   return true;

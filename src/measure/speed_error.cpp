@@ -204,7 +204,14 @@ bool run_bench(const std::vector<BenchFrame> &frames,
         rows.push_back(row);
         continue;
       }
-      row.image = compare_rgb(read_rgb_from_back_buffer(width, height), truth.rgb, width, height);
+      std::string compare_error;
+      if (!compare_rgb(read_rgb_from_back_buffer(width, height), truth.rgb, width, height,
+                       row.image, compare_error)) {
+        row.failed = true;
+        row.failure = compare_error;
+        rows.push_back(row);
+        continue;
+      }
       technique->render_mask(scene);
       row.errors = compare_masks(read_mask_from_back_buffer(width, height), truth.shadow,
                                  receivers, width, height);

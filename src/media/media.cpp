@@ -1,15 +1,12 @@
-// The media writers of media.h: OpenImageIO does the encoding; this file decides the sizes, the
-// frame names and which files a run owns.
+// The media writers of media.h: this file decides the sizes, the frame names and which files a
+// run owns; the image files module (image_files.h, OpenImageIO) does the encoding.
 #include "media/media.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
+#include "media/image_files.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 
 namespace fs = std::filesystem;
 
@@ -26,24 +23,25 @@ bool is_frame_file_name(const std::string &name) {
   return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-OIIO::ImageBuf half_size(const OIIO::ImageBuf &frame) {
-  return OIIO::ImageBufAlgo::resize(
-      frame, "", 0, OIIO::ROI(0, frame.spec().width / 2, 0, frame.spec().height / 2, 0, 1, 0, 3));
-}
-
 }  // namespace
 
-bool write_rgb_png(const std::string &path, int width, int height, const std::vector<std::uint8_t> &rgb) {
-  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8),
-                       const_cast<std::uint8_t *>(rgb.data()));
-  return image.write(path);
+bool write_rgb_png(const std::string &path, int width, int height,
+                   const std::vector<std::uint8_t> &rgb, std::string &error) {
+  if (width < 1 || height < 1 || rgb.size() != std::size_t(width) * height * 3) {
+    error = std::to_string(rgb.size()) + " bytes are not " +
+            std::to_string(width) + "x" + std::to_string(height) + " RGB pixels";
+    return false;
+  }
+  const ImageFiles *files = image_files(error);
+  return files != nullptr && files->write_rgb(path, "", width, height, rgb.data(), error);
 }
 
-bool write_mask_png(const std::string &path, int width, int height, const std::vector<std::uint8_t> &mask) {
+bool write_mask_png(const std::string &path, int width, int height,
+                    const std::vector<std::uint8_t> &mask, std::string &error) {
   std::vector<std::uint8_t> rgb;
   rgb.reserve(mask.size() * 3);
   for (std::uint8_t m : mask) rgb.insert(rgb.end(), 3, m != 0 ? 255 : 0);
-  return write_rgb_png(path, width, height, rgb);
+  return write_rgb_png(path, width, height, rgb, error);
 }
 
 bool prepare_frame_directory(const std::string &directory, std::string &error) {
@@ -73,47 +71,16 @@ std::string frame_path(const std::string &directory, int index) {
   return (fs::path(directory) / name).string();
 }
 
-bool write_contact_sheet(const std::vector<std::string> &frames, const std::string &path) {
-  const std::size_t count = std::min<std::size_t>(frames.size(), 16);
-  if (count == 0) return true;
-  const int columns = 4;
-  const int rows = static_cast<int>((count + columns - 1) / columns);
-  OIIO::ImageBuf first(frames[0]);
-  if (!first.read()) return false;
-  const int w = first.spec().width / 2, h = first.spec().height / 2;
-  OIIO::ImageBuf sheet(OIIO::ImageSpec(w * columns, h * rows, 3, OIIO::TypeDesc::UINT8));
-  OIIO::ImageBufAlgo::zero(sheet);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t index = i * frames.size() / count;  // spread over the whole run
-    OIIO::ImageBuf frame(frames[index]);
-    OIIO::ImageBuf small = OIIO::ImageBufAlgo::resize(frame, "", 0, OIIO::ROI(0, w, 0, h, 0, 1, 0, 3));
-    const int x = static_cast<int>(i % columns) * w, y = static_cast<int>(i / columns) * h;
-    OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, small);
-  }
-  return sheet.write(path);
+bool write_contact_sheet(const std::vector<std::string> &frames, const std::string &path,
+                         std::string &error) {
+  const ImageFiles *files = image_files(error);
+  return files != nullptr && files->write_contact_sheet(frames, path, error);
 }
 
-bool write_gif(const std::vector<std::string> &frames, const std::string &path, int fps) {
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  if (!out || !out->supports("multiimage") || frames.empty()) return false;
-  std::vector<OIIO::ImageSpec> specs;
-  std::vector<OIIO::ImageBuf> images;
-  for (const std::string &file : frames) {
-    OIIO::ImageBuf frame(file);
-    if (!frame.read()) return false;
-    OIIO::ImageBuf small = half_size(frame);
-    OIIO::ImageSpec spec = small.spec();
-    spec.attribute("FramesPerSecond", OIIO::TypeRational, std::vector<int>{fps, 1}.data());
-    spec.attribute("oiio:Movie", 1);
-    specs.push_back(spec);
-    images.push_back(std::move(small));
-  }
-  if (!out->open(path, static_cast<int>(specs.size()), specs.data())) return false;
-  for (std::size_t i = 0; i < images.size(); ++i) {
-    if (i > 0 && !out->open(path, specs[i], OIIO::ImageOutput::AppendSubimage)) return false;
-    if (!images[i].write(out.get())) return false;
-  }
-  return out->close();
+bool write_gif(const std::vector<std::string> &frames, const std::string &path, int fps,
+               std::string &error) {
+  const ImageFiles *files = image_files(error);
+  return files != nullptr && files->write_gif(frames, path, fps, error);
 }
 
 }  // namespace gs::media

@@ -1,7 +1,7 @@
 // Slides and beam maps read from image files (PNG, JPEG, ... through OpenImageIO), for scene
-// files. The decoding lives in a module, libglideshadows_image_reader.so, loaded the first time
-// an image is read, so that programs that read no image (the fight, the benchmarks) do not load
-// OpenImageIO and its ~250 libraries.
+// files. The decoding lives in the image files module (media/image_files.h), loaded the first
+// time an image is read, so that programs that read no image (the fight, the benchmarks) do not
+// load OpenImageIO and its ~260 libraries.
 #pragma once
 
 #include "scene/scene.h"

@@ -80,20 +80,20 @@ TEST(CommandLineExitCodes, RenderMissingAShadowExitsOneUnlessAllowed) {
   EXPECT_EQ(planar.exit_code, 0) << planar.output;
 }
 
-// Slides and beams from image files are decoded by a module the scene loads when it first needs
-// one: a module that cannot be loaded is a failed load naming the image and the module.
-TEST(CommandLineExitCodes, MissingImageReaderModuleExitsOneNamingIt) {
-  const std::string out = scratch("image_reader");
+// Slides and beams from image files are decoded by the image files module, loaded when first
+// needed: a module that cannot be loaded is a failed load naming the image and the module.
+TEST(CommandLineExitCodes, MissingImageFilesModuleExitsOneNamingIt) {
+  const std::string out = scratch("image_files");
   std::ofstream(out + "/beam.png") << "not read: the module is missing";
   std::ofstream(out + "/scene.json")
       << R"({"camera": {"position": [0, 2, 5], "target": [0, 0, 0]},
              "lights": [{"position": [0, 5, 0], "target": [0, 0, 0], "beam": "beam.png"}],
              "objects": [{"mesh": {"shape": "box"}}]})";
-  const std::string module = out + "/no_such_reader.so";
-  const ToolRun run = ::run_tool("GLIDESHADOWS_IMAGE_READER=" + module + " " GLIDESHADOWS_PATH,
+  const std::string module = out + "/no_such_module.so";
+  const ToolRun run = ::run_tool("GLIDESHADOWS_IMAGE_FILES=" + module + " " GLIDESHADOWS_PATH,
                                  "render " + out + "/scene.json --out " + out + "/r.png");
   EXPECT_EQ(run.exit_code, 1) << run.output;
-  EXPECT_NE(run.output.find(out + "/beam.png: cannot load the image reader module " + module),
+  EXPECT_NE(run.output.find(out + "/beam.png: cannot load the image files module " + module),
             std::string::npos)
       << run.output;
 }

@@ -279,13 +279,24 @@ TEST(CompareImages, InMemoryRgbMatchesTheFileComparison) {
   ImageErrors from_files;
   std::string error;
   ASSERT_TRUE(compare_images(a, b, "", from_files, error)) << error;
-  const ImageErrors in_memory = compare_rgb(black, changed, w, h);
+  ImageErrors in_memory, identical;
+  ASSERT_TRUE(compare_rgb(black, changed, w, h, in_memory, error)) << error;
   EXPECT_DOUBLE_EQ(in_memory.mean, from_files.mean);
   EXPECT_DOUBLE_EQ(in_memory.max, from_files.max);
   EXPECT_DOUBLE_EQ(in_memory.psnr, from_files.psnr);
   EXPECT_EQ(in_memory.pixels_over_threshold, 2);
   EXPECT_NEAR(in_memory.mean, (1.0 + 2.0 / 255) / (w * h * 3), 1e-6);
-  EXPECT_EQ(compare_rgb(changed, changed, w, h).psnr, 999.0);
+  ASSERT_TRUE(compare_rgb(changed, changed, w, h, identical, error)) << error;
+  EXPECT_EQ(identical.psnr, 999.0);
+}
+
+// Pixels that do not make the size given are refused by name, never scored.
+TEST(CompareImages, InMemoryRgbOfTheWrongSizeIsAnError) {
+  const std::vector<unsigned char> six(6, 0), eight(8, 0);
+  ImageErrors errors;
+  std::string error;
+  EXPECT_FALSE(compare_rgb(six, eight, 1, 2, errors, error));
+  EXPECT_NE(error.find("6 and 8 bytes"), std::string::npos) << error;
 }
 
 TEST(CompareImages, ReportsMissingFileAndSizeMismatchByName) {
