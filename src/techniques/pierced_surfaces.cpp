@@ -71,9 +71,13 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   grid.cell = glm::max((high - low) / static_cast<float>(kGrid), glm::vec3(1e-12f));
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const glm::uvec3 &t = triangles[i];
-    const Triangle triangle = triangle_of(world[t.x], world[t.y], world[t.z]);
+    const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
+    if (glm::any(glm::lessThan(glm::max(a, glm::max(b, c)), low)) ||
+        glm::any(glm::lessThan(high, glm::min(a, glm::min(b, c))))) {
+      continue;
+    }
+    const Triangle triangle = triangle_of(a, b, c);
     if (triangle.normal == glm::vec3(0.0f)) continue;
-    if (glm::any(glm::lessThan(triangle.high, low)) || glm::any(glm::lessThan(high, triangle.low))) continue;
     const glm::ivec3 first = grid.at(triangle.low), last = grid.at(triangle.high);
     for (int z = first.z; z <= last.z; ++z) {
       for (int y = first.y; y <= last.y; ++y) {
