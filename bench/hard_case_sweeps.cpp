@@ -226,8 +226,8 @@ bool classes() {
   // Casters through receivers that are not planar, and the fighter sample, whose fists and feet
   // reach into the other fighter and the ring.
   columns.clear();
-  for (const char *name : {"box_sunk_in_mound", "limb_in_drum", "rod_through_ridge",
-                           "post_in_waves", "ball_in_crease", "limb_in_ring", "rod_across_valley"}) {
+  for (const char *name : {"box_sunk_in_mound", "limb_in_drum", "rod_through_ridge", "post_in_waves",
+                           "ball_in_crease", "limb_in_ring", "rod_across_valley"}) {
     columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
   }
   columns.push_back({"fighters", {"fighters", hard_cases::load("../../scenes/fighters.json")}});

@@ -16,7 +16,7 @@
 namespace gs {
 namespace {
 
-constexpr int kGrid = 8;  // cells a side of the grid (world space) the meshes' triangles are sorted in
+constexpr int kGrid = 8;  // cells a side of the world-space grid the triangles are sorted into
 
 struct Triangle {
   glm::vec3 a, b, c;
@@ -45,16 +45,22 @@ bool crosses(const Triangle &t, const glm::vec3 &p, const glm::vec3 &q, float to
 // Triangles sorted into a kGrid^3 grid over a box (world space) by their bounds.
 struct TriangleGrid {
   glm::vec3 low, cell;
-  std::vector<std::vector<std::size_t>> cells = std::vector<std::vector<std::size_t>>(kGrid * kGrid * kGrid);
+  std::vector<std::vector<std::size_t>> cells =
+      std::vector<std::vector<std::size_t>>(kGrid * kGrid * kGrid);
+  // Clamped while still a float, so a point far outside the box gives an edge cell, not an
+  // integer overflow.
   glm::ivec3 at(const glm::vec3 &p) const {
-    return glm::clamp(glm::ivec3(glm::floor((p - low) / cell)), glm::ivec3(0), glm::ivec3(kGrid - 1));
+    return glm::ivec3(glm::clamp(glm::floor((p - low) / cell), glm::vec3(0.0f),
+                                 glm::vec3(static_cast<float>(kGrid - 1))));
   }
   template <typename Visit>
   void each_cell(const glm::vec3 &from, const glm::vec3 &to, Visit visit) const {
     const glm::ivec3 first = at(from), last = at(to);
     for (int z = first.z; z <= last.z; ++z) {
       for (int y = first.y; y <= last.y; ++y) {
-        for (int x = first.x; x <= last.x; ++x) visit(cells[static_cast<std::size_t>((z * kGrid + y) * kGrid + x)]);
+        for (int x = first.x; x <= last.x; ++x) {
+          visit(cells[static_cast<std::size_t>((z * kGrid + y) * kGrid + x)]);
+        }
       }
     }
   }

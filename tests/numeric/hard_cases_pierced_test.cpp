@@ -23,9 +23,10 @@ void expect_right_or_refused_around(const std::string &file, float degrees) {
   for (const float turn : {-degrees, degrees}) {
     gs::Scene scene = hard_cases::load(file);
     gs::SpotLight &light = scene.lights[0];
-    const glm::mat4 about_target = glm::translate(glm::mat4(1.0f), light.target) *
-                                   glm::rotate(glm::mat4(1.0f), glm::radians(turn), glm::vec3(0, 1, 0)) *
-                                   glm::translate(glm::mat4(1.0f), -light.target);
+    const glm::mat4 about_target =
+        glm::translate(glm::mat4(1.0f), light.target) *
+        glm::rotate(glm::mat4(1.0f), glm::radians(turn), glm::vec3(0, 1, 0)) *
+        glm::translate(glm::mat4(1.0f), -light.target);
     light.position = glm::vec3(about_target * glm::vec4(light.position, 1.0f));
     expect_right_or_refused(file + " turned " + std::to_string(turn), scene);
   }
@@ -38,11 +39,25 @@ void expect_right_or_refused_around(const std::string &file, float degrees) {
 
 }  // namespace
 
-TEST(HardCases, CrateSunkInAFacetedMound) { expect_right_or_refused_around("box_sunk_in_mound.json", 40.0f); }
-TEST(HardCases, LimbPushedIntoADrum) { expect_right_or_refused_around("limb_in_drum.json", 35.0f); }
-TEST(HardCases, RodThroughARoofRidge) { expect_right_or_refused_around("rod_through_ridge.json", 30.0f); }
-TEST(HardCases, PostSunkInWavyGround) { expect_right_or_refused_around("post_in_waves.json", 45.0f); }
-TEST(HardCases, BallPressedIntoACrease) { expect_right_or_refused_around("ball_in_crease.json", 30.0f); }
-TEST(HardCases, LimbSunkInTheRingsMat) { expect_right_or_refused_around("limb_in_ring.json", 15.0f); }
+TEST(HardCases, CrateSunkInAFacetedMound) {
+  expect_right_or_refused_around("box_sunk_in_mound.json", 40.0f);
+}
+TEST(HardCases, LimbPushedIntoADrum) {
+  expect_right_or_refused_around("limb_in_drum.json", 35.0f);
+}
+TEST(HardCases, RodThroughARoofRidge) {
+  expect_right_or_refused_around("rod_through_ridge.json", 30.0f);
+}
+TEST(HardCases, PostSunkInWavyGround) {
+  expect_right_or_refused_around("post_in_waves.json", 45.0f);
+}
+TEST(HardCases, BallPressedIntoACrease) {
+  expect_right_or_refused_around("ball_in_crease.json", 30.0f);
+}
+TEST(HardCases, LimbSunkInTheRingsMat) {
+  expect_right_or_refused_around("limb_in_ring.json", 15.0f);
+}
 // Every corner of the rod is behind the valley's surface, but its middle is above the crease.
-TEST(HardCases, RodSunkAtBothEndsAcrossAValley) { expect_right_or_refused_around("rod_across_valley.json", 30.0f); }
+TEST(HardCases, RodSunkAtBothEndsAcrossAValley) {
+  expect_right_or_refused_around("rod_across_valley.json", 30.0f);
+}
