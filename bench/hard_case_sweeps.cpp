@@ -9,7 +9,8 @@
 //   screen size  1x1 .. 1024x768;
 //   acne         the depth map's bias on the scenes where acne and peter-panning show;
 //   classes      issue 14's scenes (wide casters near the light, shadows beyond the beam, scene
-//                flags, acne), every technique;
+//                flags, acne, coarse texels, casters through planar and curved receivers), every
+//                technique;
 //   footprint    the projected texture's texel footprint on screen against its interior error.
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
 //   hard_case_sweeps [classes|footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
@@ -218,7 +219,19 @@ bool classes() {
         "plank_through_wall", "crate_through_ramp"}) {
     columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
   }
-  return sweep("Classes of hard scenes, continued: coarse texels, casters through their receivers",
+  if (!sweep("Classes of hard scenes, continued: coarse texels, casters through their receivers",
+             "scene", columns, every_technique())) {
+    return false;
+  }
+  // Casters through receivers that are not planar, and the fighter sample, whose fists and feet
+  // reach into the other fighter and the ring.
+  columns.clear();
+  for (const char *name : {"box_sunk_in_mound", "limb_in_drum", "rod_through_ridge", "post_in_waves",
+                           "ball_in_crease", "limb_in_ring", "rod_across_valley"}) {
+    columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
+  }
+  columns.push_back({"fighters", {"fighters", hard_cases::load("../../scenes/fighters.json")}});
+  return sweep("Classes of hard scenes, continued: casters through receivers that are not planar",
                "scene", columns, every_technique());
 }
 

@@ -1,9 +1,12 @@
 // Step 1 of the projected shadow texture: the caster drawn flat from the light (565 red 11110b on
-// 0) into the back buffer or texture memory, clipped to its view's caster planes, the cover of
-// texture cells it touched (LightView::occupied, covered) and the cells its silhouette crosses. Spaces: light view and light clip
-// in; Glide screen (pixels, y down) of the light's size x size view out.
+// 0) into the back buffer or texture memory, clipped to its view's caster planes (and, for a
+// curved receiver it reaches through, only where nearer the light than that receiver's surface:
+// SurfaceMask), the cover of texture cells it touched (LightView::occupied, covered) and the
+// cells its silhouette crosses. Spaces: light view and light clip in; Glide screen (pixels, y
+// down) of the light's size x size view out.
 #include "techniques/projected_shadow.h"
 
+#include "techniques/pierced_receivers.h"
 #include "techniques/stencil_volume_shadow.h"
 
 #include <glide_shim.h>
@@ -82,7 +85,8 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
 
 // Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                              const ProjectedShadowOptions &options, FxU32 texture_address) {
+                              const ProjectedShadowOptions &options, FxU32 texture_address,
+                              const SurfaceMask *mask) {
   const SceneObject &object = scene.objects[caster];
   view.direct_path = options.direct_path;
   if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
@@ -92,7 +96,8 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
                 std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
                 "memory directly";
   }
-  // The flat render: 565 red 11110b on 0, no depth test, back faces culled (closed casters).
+  // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
+  // (closed casters).
   if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
     view.usable = false;
     view.problem = std::string("step 1 cannot render into texture memory: ") +
@@ -110,6 +115,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   // sheet) may show the light only its back, so it is drawn from both sides.
   grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
   grBufferClear(0, 0, 0);
+  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grConstantColorValue(kShadowRedArgb);
@@ -126,6 +132,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     }
     const glm::vec4 clip = view.projection * in_view[i];
     if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
+    if (inside[i] && mask) screen[i].oow = depth_oow(view, clip.w);
     depth[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
@@ -214,6 +221,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     for (const ClipVertex &v : polygon) {
       const glm::vec4 clip = view.projection * v.clip;
       fan.push_back(to_screen(clip, view.size, view.size));
+      if (mask) fan.back().oow = depth_oow(view, clip.w);
       nearest = std::min(nearest, clip.w);
     }
     for (const GrVertex &v : fan) corners.push_back(&v);
@@ -230,6 +238,28 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     }
     draw_fan(fan);
     occupy(corners.data(), corners.size(), nearest);
+  }
+  if (mask) {
+    // The caster's cut by the receiver's surface runs through its triangles that pass through
+    // it: the fine cells of their bounding boxes join the silhouette.
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+      if (!(*mask->caster_crossing)[k]) continue;
+      const glm::uvec3 &t = mesh.triangles[k];
+      glm::vec2 low(INFINITY), high(-INFINITY);
+      for (unsigned i : {t.x, t.y, t.z}) {
+        const glm::vec4 clip = view.projection * in_view[i];
+        if (!(clip.w > 0.0f)) continue;
+        const GrVertex v = to_screen(clip, view.size, view.size);
+        low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+      }
+      if (!(low.x <= high.x)) continue;
+      for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
+        for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
+          view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
+        }
+      }
+    }
+    grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   }
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));

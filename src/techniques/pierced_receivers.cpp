@@ -1,10 +1,12 @@
-// Which planar receivers a caster reaches through, from the light's side (world space): each
+// Which receivers a caster reaches through, from the light's side (world space): each
 // receiver's plane from its largest triangle, its vertices checked against it, the caster's
-// world vertices checked beyond it.
+// world vertices checked beyond it; a receiver that is not planar is left to pierced_surface
+// (pierced_surfaces.cpp).
 #include "techniques/pierced_receivers.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -38,9 +40,9 @@ bool planar_receiver(const ProjectedObject &receiver, const glm::vec3 &light, gl
 
 }  // namespace
 
-std::vector<PiercedReceiver> pierced_planar_receivers(const Scene &scene, const FrameGeometry &frame,
-                                                      std::size_t caster,
-                                                      const glm::vec3 &light_position) {
+std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGeometry &frame,
+                                               std::size_t caster,
+                                               const glm::vec3 &light_position) {
   std::vector<PiercedReceiver> pierced;
   const SceneObject &object = scene.objects[caster];
   const Mesh &mesh = caster_mesh(object);
@@ -55,14 +57,23 @@ std::vector<PiercedReceiver> pierced_planar_receivers(const Scene &scene, const 
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     if (r == caster || !scene.objects[r].receives_shadow) continue;
     glm::vec4 plane;
-    if (!planar_receiver(frame.objects[r], light_position, plane)) continue;
+    if (!planar_receiver(frame.objects[r], light_position, plane)) {
+      PiercedReceiver surface;
+      surface.receiver = r;
+      surface.planar = false;
+      if (pierced_surface(frame.objects[r], caster_world, mesh.triangles, low, high, tolerance,
+                          surface)) {
+        pierced.push_back(std::move(surface));
+      }
+      continue;
+    }
     const bool beyond = std::any_of(caster_world.begin(), caster_world.end(), [&](const glm::vec3 &p) {
       return glm::dot(plane, glm::vec4(p, 1.0f)) < -tolerance;
     });
     const bool before = std::any_of(caster_world.begin(), caster_world.end(), [&](const glm::vec3 &p) {
       return glm::dot(plane, glm::vec4(p, 1.0f)) > tolerance;
     });
-    if (beyond) pierced.push_back({r, plane, before});
+    if (beyond) pierced.push_back({r, true, plane, before, {}});
   }
   return pierced;
 }

@@ -205,9 +205,9 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // the shadow falls.
       std::vector<ShadowJob> caster_jobs;
       const FxU32 caster_address = next_address;
-      // The caster's textures for the receivers marked in `receivers`, clipped to the light's
-      // side of `receiver_plane` (world) when there is one.
-      auto cast = [&](const std::vector<bool> &receivers, const glm::vec4 *receiver_plane) {
+      // The caster's textures for the receivers marked in `receivers`; for a `pierced` one,
+      // clipped to the light's side of its plane (world) or masked by its surface.
+      auto cast = [&](const std::vector<bool> &receivers, const PiercedReceiver *pierced) {
         for (LightView &part : split_into_textures(fitted)) {
           // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
           GrTexInfo needed{shadow_lod(part.size), shadow_lod(part.size), GR_ASPECT_1x1,
@@ -222,14 +222,18 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           job.caster = caster;
           job.light = light;
           job.view = part;
-          if (receiver_plane) {
+          SurfaceMask mask;
+          if (pierced && pierced->planar) {
             // A world plane as a light-view plane: the inverse transpose of the view matrix.
-            const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * *receiver_plane;
+            const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * pierced->plane;
             job.view.caster_planes.push_back(plane);
             job.view.edge_planes.push_back(plane);
+          } else if (pierced) {
+            mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing};
           }
           auto step_start = Clock::now();
-          render_caster_from_light(scene, caster, job.view, options, next_address);  // 1
+          render_caster_from_light(scene, caster, job.view, options, next_address,
+                                   mask.receiver ? &mask : nullptr);  // 1
           finish_step(0, step_start);
           if (!job.view.usable) {
             result.errors.push_back(job.view.problem);
@@ -254,7 +258,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       };
       start = Clock::now();
       const std::vector<PiercedReceiver> pierced =
-          pierced_planar_receivers(scene, frame, caster, scene.lights[light].position);
+          pierced_receivers(scene, frame, caster, scene.lights[light].position);
       result.times.ms[0] += elapsed_ms(start);
       std::vector<bool> receivers(scene.objects.size(), true);
       for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
@@ -267,7 +271,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         if (!p.casts) continue;  // nothing of the caster on the light's side: no shadow on it
         std::vector<bool> only(scene.objects.size(), false);
         only[p.receiver] = true;
-        cast(only, &p.plane);
+        cast(only, &p);
       }
       std::vector<FootprintSample> samples;
       for (const ShadowJob &job : caster_jobs) {

@@ -1,7 +1,7 @@
 // Hubert Nguyen's projected shadow texture (Game Developer, 1999) in Glide, as the article's five
 // steps: the caster flat from the light; an ARGB_4444 texture of it; (s, t) for the receivers; the
 // scene; the flagged triangles again with the texture. A texture per caster and light (one more
-// per planar receiver it reaches through: pierced_receivers.h), no shadow on the caster itself or
+// per receiver it reaches through: pierced_receivers.h), no shadow on the caster itself or
 // beyond the beam (light_beam.h), and none from a texture too coarse (texel_footprint.h).
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <glide.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -126,7 +127,8 @@ struct ShadowJob {
 // Step 1, in three parts. The light's view fitted to the caster (LightView), keeping a clean
 // border; a map larger than a Voodoo 1 texture split into 256x256 tiles; and the caster
 // drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled unless
-// the caster is an open mesh; only its part inside LightView::caster_planes) in a
+// the caster is an open mesh; only its part inside LightView::caster_planes, and with a
+// SurfaceMask only where it is nearer the light than that receiver's surface) in a
 // size x size region: the back buffer's top-left corner, or texture memory at
 // `texture_address` on the direct path.
 // The Glide LOD of a size x size shadow texture (size a power of two, 1..256).
@@ -138,8 +140,17 @@ inline GrLOD_t shadow_lod(int size) {
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
                          const ProjectedShadowOptions &options);
 std::vector<LightView> split_into_textures(const LightView &view);
+// A non-planar receiver the caster reaches through (pierced_receivers.h): step 1 draws the
+// caster only where it is nearer the light than the receiver's light-facing surface, and marks
+// the caster's triangles that pass through that surface (caster_crossing, per caster_mesh
+// triangle) as silhouette, since the cut is an edge of the shadow.
+struct SurfaceMask {
+  const ProjectedObject *receiver = nullptr;
+  const std::vector<std::uint8_t> *caster_crossing = nullptr;
+};
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                              const ProjectedShadowOptions &options, FxU32 texture_address);
+                              const ProjectedShadowOptions &options, FxU32 texture_address,
+                              const SurfaceMask *mask = nullptr);
 // Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
 // GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
