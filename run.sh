@@ -54,7 +54,7 @@ install_missing_packages() {
 
 # Both builds use Ninja, which compiles a target's files while the libraries it links are still
 # being built; Make waits for them, so on two cores one often idled: the sanitizer build of CI's
-# targets took 151 s with Ninja against 258 s with Make (5eb7d5d, quiet machine). A build tree
+# targets took 151 s with Ninja against 258 s with Make (2013a5f, quiet machine). A build tree
 # made by another generator is configured afresh (cmake refuses to switch generators in place).
 configure_fresh_if_not_ninja() {
   if [ -f "$1/CMakeCache.txt" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$1/CMakeCache.txt"; then
