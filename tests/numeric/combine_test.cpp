@@ -7,8 +7,10 @@
 #include "voodoo_reference.h"
 
 #include <functional>
+#include <iterator>
 #include <random>
 #include <sstream>
+#include <string>
 
 namespace {
 
@@ -150,66 +152,81 @@ class CombineTest : public GlideWindowTest {
   std::vector<voodoo_ref::Rgba> iterated_;
 };
 
-TEST_F(CombineTest, ColorCombineMatchesReferenceForEveryConfiguration) {
-  std::mt19937 random(7);
+// The exhaustive tests, one instance per combine function, so that ctest can spread them over
+// processes (and cores). Each instance draws the configurations of its function, with the same
+// random constant colours as one run over every function would draw for them.
+class CombineFunctionTest : public CombineTest,
+                            public ::testing::WithParamInterface<std::size_t> {
+ protected:
+  int function() const { return kFunctions[GetParam()]; }
+
+  // The colour and alpha tests draw one random constant per configuration: 120 per function.
+  static constexpr int kConstantsPerFunction = 10 * 2 * 3 * 2;
+  std::mt19937 constants(unsigned seed) const {
+    std::mt19937 random(seed);
+    random.discard(static_cast<unsigned long long>(kConstantsPerFunction) * GetParam());
+    return random;
+  }
+};
+
+TEST_P(CombineFunctionTest, ColorCombineMatchesReferenceForEveryConfiguration) {
+  std::mt19937 random = constants(7);
   // a_local = iterated alpha, a_other = texture alpha, for the colour unit's alpha factors.
   const voodoo_ref::CombineConfig alpha{GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
                                         GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, false};
   grAlphaCombine(alpha.function, alpha.factor, alpha.local, alpha.other, FXFALSE);
   int configurations = 0, mismatches = 0;
-  for (int function : kFunctions)
-    for (int factor : kFactors)
-      for (int local : kLocals)
-        for (int other : kOthers)
-          for (bool invert : {false, true}) {
-            const voodoo_ref::CombineConfig color{function, factor, local, other, invert};
-            const voodoo_ref::Rgba constant = set_random_constant(random);
-            grColorCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
-            draw_pixels();
-            ++configurations;
-            mismatches += compare(describe("grColorCombine", color), read_buffer(),
-                                  [&](int x, int y) {
-                                    return voodoo_ref::combine_fbi(color, alpha,
-                                                                   inputs(x, y, constant));
-                                  },
-                                  true);
-            if (mismatches > 5) return;
-          }
+  for (int factor : kFactors)
+    for (int local : kLocals)
+      for (int other : kOthers)
+        for (bool invert : {false, true}) {
+          const voodoo_ref::CombineConfig color{function(), factor, local, other, invert};
+          const voodoo_ref::Rgba constant = set_random_constant(random);
+          grColorCombine(function(), factor, local, other, invert ? FXTRUE : FXFALSE);
+          draw_pixels();
+          ++configurations;
+          mismatches += compare(describe("grColorCombine", color), read_buffer(),
+                                [&](int x, int y) {
+                                  return voodoo_ref::combine_fbi(color, alpha,
+                                                                 inputs(x, y, constant));
+                                },
+                                true);
+          if (mismatches > 5) return;
+        }
   expect_no_error();
-  EXPECT_EQ(configurations, 11 * 10 * 2 * 3 * 2);
+  EXPECT_EQ(configurations, kConstantsPerFunction);
 }
 
-TEST_F(CombineTest, AlphaCombineMatchesReferenceForEveryConfiguration) {
+TEST_P(CombineFunctionTest, AlphaCombineMatchesReferenceForEveryConfiguration) {
   show_alpha_as_colour();
   const voodoo_ref::CombineConfig color{GR_COMBINE_FUNCTION_ZERO, GR_COMBINE_FACTOR_ZERO,
                                         GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_ITERATED, false};
   grColorCombine(color.function, color.factor, color.local, color.other, FXFALSE);
-  std::mt19937 random(11);
+  std::mt19937 random = constants(11);
   int configurations = 0, mismatches = 0;
-  for (int function : kFunctions)
-    for (int factor : kFactors)
-      for (int local : kLocals)
-        for (int other : kOthers)
-          for (bool invert : {false, true}) {
-            const voodoo_ref::CombineConfig alpha{function, factor, local, other, invert};
-            const voodoo_ref::Rgba constant = set_random_constant(random);
-            grAlphaCombine(function, factor, local, other, invert ? FXTRUE : FXFALSE);
-            grBufferClear(0xFFFFFFFFu, 0, 0);
-            draw_pixels();
-            ++configurations;
-            mismatches += compare(describe("grAlphaCombine", alpha), read_buffer(),
-                                  [&](int x, int y) {
-                                    return voodoo_ref::combine_fbi(color, alpha,
-                                                                   inputs(x, y, constant));
-                                  },
-                                  false);
-            if (mismatches > 5) return;
-          }
+  for (int factor : kFactors)
+    for (int local : kLocals)
+      for (int other : kOthers)
+        for (bool invert : {false, true}) {
+          const voodoo_ref::CombineConfig alpha{function(), factor, local, other, invert};
+          const voodoo_ref::Rgba constant = set_random_constant(random);
+          grAlphaCombine(function(), factor, local, other, invert ? FXTRUE : FXFALSE);
+          grBufferClear(0xFFFFFFFFu, 0, 0);
+          draw_pixels();
+          ++configurations;
+          mismatches += compare(describe("grAlphaCombine", alpha), read_buffer(),
+                                [&](int x, int y) {
+                                  return voodoo_ref::combine_fbi(color, alpha,
+                                                                 inputs(x, y, constant));
+                                },
+                                false);
+          if (mismatches > 5) return;
+        }
   expect_no_error();
-  EXPECT_EQ(configurations, 11 * 10 * 2 * 3 * 2);
+  EXPECT_EQ(configurations, kConstantsPerFunction);
 }
 
-TEST_F(CombineTest, TextureCombineMatchesReferenceForEveryConfiguration) {
+TEST_P(CombineFunctionTest, TextureCombineMatchesReferenceForEveryConfiguration) {
   // ARGB_8332 texels: distinct R, G, B and a full 8-bit alpha.
   std::mt19937 random(5);
   std::uniform_int_distribution<int> texel(0, 0xFFFF);
@@ -233,28 +250,35 @@ TEST_F(CombineTest, TextureCombineMatchesReferenceForEveryConfiguration) {
     return voodoo_ref::decode_texel(GR_TEXFMT_ARGB_8332,
                                     texels[static_cast<std::size_t>(y * kWidth + x)]);
   };
+  const int combine_function = function();
   int mismatches = 0;
-  for (int function : kFunctions)
-    for (int factor : tmu_factors)
-      for (bool invert : {false, true}) {
-        const voodoo_ref::TexCombineConfig tmu{function, factor, function, factor, invert, invert};
-        grTexCombine(GR_TMU0, function, factor, function, factor, invert, invert);
-        grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-        draw_pixels();
-        const std::string what = "grTexCombine(function " + std::to_string(function) +
-                                 ", factor " + std::to_string(factor) + ", invert " +
-                                 std::to_string(invert) + ")";
-        auto want = [&](int x, int y) {
-          return voodoo_ref::combine_tmu(tmu, texel_at(x, y), voodoo_ref::kNoUpstreamTmu);
-        };
-        mismatches += compare(what + " rgb", read_buffer(), want, true);
-        show_alpha_as_colour();
-        draw_pixels();
-        mismatches += compare(what + " alpha", read_buffer(), want, false);
-        if (mismatches > 5) return;
-      }
+  for (int factor : tmu_factors)
+    for (bool invert : {false, true}) {
+      const voodoo_ref::TexCombineConfig tmu{combine_function, factor, combine_function, factor,
+                                           invert, invert};
+      grTexCombine(GR_TMU0, combine_function, factor, combine_function, factor, invert, invert);
+      grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+      draw_pixels();
+      const std::string what = "grTexCombine(function " + std::to_string(combine_function) +
+                               ", factor " + std::to_string(factor) + ", invert " +
+                               std::to_string(invert) + ")";
+      auto want = [&](int x, int y) {
+        return voodoo_ref::combine_tmu(tmu, texel_at(x, y), voodoo_ref::kNoUpstreamTmu);
+      };
+      mismatches += compare(what + " rgb", read_buffer(), want, true);
+      show_alpha_as_colour();
+      draw_pixels();
+      mismatches += compare(what + " alpha", read_buffer(), want, false);
+      if (mismatches > 5) return;
+    }
   expect_no_error();
 }
+
+INSTANTIATE_TEST_SUITE_P(EveryFunction, CombineFunctionTest,
+                         ::testing::Range<std::size_t>(0, std::size(kFunctions)),
+                         [](const ::testing::TestParamInfo<std::size_t> &instance) {
+                           return "function" + std::to_string(kFunctions[instance.param]);
+                         });
 
 TEST_F(CombineTest, ChromaKeyDiscardsExactlyTheMatchingOtherColour) {
   // Other = iterated colour; key one pixel's colour and a colour no pixel has.
