@@ -6,7 +6,7 @@
 # Why groups: a test program's start is much of a small test's cost, and a group pays it once.
 # A process that opens a window loads the Mesa stack with LLVM (about 50 ms of CPU in the
 # Release build, measured on numeric_tests at 620c658, and more under the sanitizers); one that
-# links OpenImageIO (core_tests, the image suites) relocates its ~260 libraries too, about 0.4 s.
+# links OpenImageIO (image_file_tests, the image suites) relocates its ~260 libraries too, about 0.4 s.
 # Most tests take a few milliseconds.
 # ctest names a group LABEL.Suite (LABEL.Suite.2of4 when a suite needs several), a lone test
 # LABEL.Suite.Test; the program's output names each test that fails.
