@@ -83,10 +83,10 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
 
 }  // namespace
 
-// Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
-void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                              const ProjectedShadowOptions &options, FxU32 texture_address,
-                              const SurfaceMask *mask) {
+// Step 1's CPU part: the direct-path note, the caster's light-screen triangles and the cells
+// they cover (LightView::occupied, covered, silhouette).
+CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                                   const ProjectedShadowOptions &options, const SurfaceMask *mask) {
   const SceneObject &object = scene.objects[caster];
   view.direct_path = options.direct_path;
   if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
@@ -96,32 +96,14 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
                 std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
                 "memory directly";
   }
-  // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
-  // (closed casters).
-  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
-    view.usable = false;
-    view.problem = std::string("step 1 cannot render into texture memory: ") +
-                   glideShimGetLastErrorMessage();
-    return;
-  }
-  const FxU32 side = static_cast<FxU32>(view.size);
-  grClipWindow(0, 0, side, side);
-  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
-  grDepthMask(FXFALSE);
-  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
-  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-  grChromakeyMode(GR_CHROMAKEY_DISABLE);
+  CasterDraw draw;
   // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
   // sheet) may show the light only its back, so it is drawn from both sides.
-  grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, 0);
-  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
-  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
-                 GR_COMBINE_OTHER_NONE, FXFALSE);
-  grConstantColorValue(kShadowRedArgb);
+  draw.closed = is_closed_surface(caster_mesh(object));
   const glm::mat4 to_view = view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
-  std::vector<GrVertex> screen(mesh.positions.size());
+  std::vector<GrVertex> &screen = draw.vertices;
+  screen.resize(mesh.positions.size());
   std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
   std::vector<glm::vec4> in_view(mesh.positions.size());
   std::vector<bool> inside(mesh.positions.size(), true);
@@ -202,7 +184,7 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   std::vector<const GrVertex *> corners;
   for (const glm::uvec3 &t : mesh.triangles) {
     if (inside[t.x] && inside[t.y] && inside[t.z]) {
-      guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
+      draw.triangles.push_back(t);  // tiles cut the caster
       const GrVertex *const triangle[3] = {&screen[t.x], &screen[t.y], &screen[t.z]};
       occupy(triangle, 3, std::min({depth[t.x], depth[t.y], depth[t.z]}));
       continue;
@@ -236,8 +218,11 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
         }
       }
     }
-    draw_fan(fan);
     occupy(corners.data(), corners.size(), nearest);
+    // Drawn as a fan of its first vertex, after the caster's own vertices in draw.vertices.
+    const auto first = static_cast<unsigned>(screen.size());
+    screen.insert(screen.end(), fan.begin(), fan.end());
+    for (unsigned i = 2; i < fan.size(); ++i) draw.triangles.emplace_back(first, first + i - 1, first + i);
   }
   if (mask) {
     // The caster's cut by the receiver's surface runs through its triangles that pass through
@@ -259,10 +244,48 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
         }
       }
     }
-    grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   }
+  return draw;
+}
+
+// Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
+// mask) into the back buffer's corner or texture memory.
+void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
+                            const SurfaceMask *mask, const CasterDraw &draw) {
+  // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
+  // (closed casters).
+  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
+    view.usable = false;
+    view.problem = std::string("step 1 cannot render into texture memory: ") +
+                   glideShimGetLastErrorMessage();
+    return;
+  }
+  const FxU32 side = static_cast<FxU32>(view.size);
+  grClipWindow(0, 0, side, side);
+  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
+  grDepthMask(FXFALSE);
+  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+  grChromakeyMode(GR_CHROMAKEY_DISABLE);
+  grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
+  grBufferClear(0, 0, 0);
+  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
+  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  grConstantColorValue(kShadowRedArgb);
+  for (const glm::uvec3 &t : draw.triangles) {
+    guDrawTriangleWithClip(&draw.vertices[t.x], &draw.vertices[t.y], &draw.vertices[t.z]);
+  }
+  if (mask) grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
+}
+
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address,
+                              const SurfaceMask *mask) {
+  const CasterDraw draw = cover_caster_from_light(scene, caster, view, options, mask);
+  draw_caster_from_light(scene, view, texture_address, mask, draw);
 }
 
 }  // namespace gs

@@ -151,6 +151,19 @@ struct SurfaceMask {
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address,
                               const SurfaceMask *mask = nullptr);
+// render_caster_from_light in two halves, so that step 3 (which needs only the cover) can run
+// before the drawing and a texture no receiver triangle would show is never drawn. The first
+// sets the view's path and cover and returns the triangles to draw; the second draws them.
+struct CasterDraw {
+  std::vector<GrVertex> vertices;     // the light's Glide screen: the caster_mesh vertices, then
+                                      // those of its triangles clipped to the caster planes
+  std::vector<glm::uvec3> triangles;  // into vertices, in the mesh's order
+  bool closed = true;                 // back faces culled (a closed caster_mesh)
+};
+CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                                   const ProjectedShadowOptions &options, const SurfaceMask *mask);
+void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
+                            const SurfaceMask *mask, const CasterDraw &draw);
 // Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
 // GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
