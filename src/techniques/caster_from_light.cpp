@@ -86,7 +86,7 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
 // Step 1's CPU part: the direct-path note, the caster's light-screen triangles and the cells
 // they cover (LightView::occupied, covered, silhouette).
 CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                                   const ProjectedShadowOptions &options, const SurfaceMask *mask) {
+                                   const ProjectedShadowOptions &options) {
   const SceneObject &object = scene.objects[caster];
   view.direct_path = options.direct_path;
   if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
@@ -104,6 +104,8 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> &screen = draw.vertices;
   screen.resize(mesh.positions.size());
+  draw.light_w.resize(mesh.positions.size());
+  draw.caster_clip.resize(mesh.positions.size());
   std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
   std::vector<glm::vec4> in_view(mesh.positions.size());
   std::vector<bool> inside(mesh.positions.size(), true);
@@ -112,10 +114,9 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
     for (const glm::vec4 &plane : view.caster_planes) {
       if (glm::dot(plane, in_view[i]) < 0.0f) inside[i] = false;
     }
-    const glm::vec4 clip = view.projection * in_view[i];
+    const glm::vec4 clip = draw.caster_clip[i] = view.projection * in_view[i];
     if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
-    if (inside[i] && mask) screen[i].oow = depth_oow(view, clip.w);
-    depth[i] = clip.w;
+    depth[i] = draw.light_w[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
   const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
@@ -181,6 +182,7 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   }
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
+  std::vector<float> fan_w;
   std::vector<const GrVertex *> corners;
   for (const glm::uvec3 &t : mesh.triangles) {
     if (inside[t.x] && inside[t.y] && inside[t.z]) {
@@ -198,12 +200,13 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
     }
     if (polygon.size() < 3) continue;
     fan.clear();
+    fan_w.clear();
     corners.clear();
     float nearest = INFINITY;
     for (const ClipVertex &v : polygon) {
       const glm::vec4 clip = view.projection * v.clip;
       fan.push_back(to_screen(clip, view.size, view.size));
-      if (mask) fan.back().oow = depth_oow(view, clip.w);
+      fan_w.push_back(clip.w);
       nearest = std::min(nearest, clip.w);
     }
     for (const GrVertex &v : fan) corners.push_back(&v);
@@ -222,30 +225,42 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
     // Drawn as a fan of its first vertex, after the caster's own vertices in draw.vertices.
     const auto first = static_cast<unsigned>(screen.size());
     screen.insert(screen.end(), fan.begin(), fan.end());
+    draw.light_w.insert(draw.light_w.end(), fan_w.begin(), fan_w.end());
     for (unsigned i = 2; i < fan.size(); ++i) draw.triangles.emplace_back(first, first + i - 1, first + i);
   }
-  if (mask) {
-    // The caster's cut by the receiver's surface runs through its triangles that pass through
-    // it: the fine cells of their bounding boxes join the silhouette.
-    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
-      if (!(*mask->caster_crossing)[k]) continue;
-      const glm::uvec3 &t = mesh.triangles[k];
-      glm::vec2 low(INFINITY), high(-INFINITY);
-      for (unsigned i : {t.x, t.y, t.z}) {
-        const glm::vec4 clip = view.projection * in_view[i];
-        if (!(clip.w > 0.0f)) continue;
-        const GrVertex v = to_screen(clip, view.size, view.size);
-        low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
-      }
-      if (!(low.x <= high.x)) continue;
-      for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
-        for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
-          view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
-        }
+  return draw;
+}
+
+void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
+                       const SurfaceMask &mask, CasterDraw &draw) {
+  // Every vertex takes its W from depth_oow (the mask surface's depth, pierced_surfaces.cpp).
+  for (std::size_t i = 0; i < draw.vertices.size(); ++i) {
+    draw.vertices[i].oow = depth_oow(view, draw.light_w[i]);
+  }
+  const Mesh &mesh = caster_mesh(scene.objects[caster]);
+  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
+  auto fine_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
+  };
+  // The caster's cut by the receiver's surface runs through its triangles that pass through
+  // it: the fine cells of their bounding boxes join the silhouette.
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    if (!(*mask.caster_crossing)[k]) continue;
+    const glm::uvec3 &t = mesh.triangles[k];
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (unsigned i : {t.x, t.y, t.z}) {
+      const glm::vec4 &clip = draw.caster_clip[i];
+      if (!(clip.w > 0.0f)) continue;
+      const GrVertex v = to_screen(clip, view.size, view.size);
+      low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+    }
+    if (!(low.x <= high.x)) continue;
+    for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
+      for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
+        view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
   }
-  return draw;
 }
 
 // Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
@@ -284,7 +299,8 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address,
                               const SurfaceMask *mask) {
-  const CasterDraw draw = cover_caster_from_light(scene, caster, view, options, mask);
+  CasterDraw draw = cover_caster_from_light(scene, caster, view, options);
+  if (mask) mask_caster_cover(scene, caster, view, *mask, draw);
   draw_caster_from_light(scene, view, texture_address, mask, draw);
 }
 

@@ -15,7 +15,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -213,8 +215,16 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       const FxU32 caster_address = next_address;
       // The caster's textures for the receivers marked in `receivers`; for a `pierced` one,
       // clipped to the light's side of its plane (world) or masked by its surface.
+      // Step 1's cover of each texture's view (in split_into_textures' order) as fitted, the
+      // same for the caster's texture for the other receivers and for each non-planar receiver
+      // it reaches through (the mask changes only W and adds the cut to the silhouette), so it
+      // is made once per caster.
+      std::vector<std::optional<std::pair<LightView, CasterDraw>>> shared_covers;
       auto cast = [&](const std::vector<bool> &receivers, const PiercedReceiver *pierced) {
-        for (LightView &part : split_into_textures(fitted)) {
+        const std::vector<LightView> parts = split_into_textures(fitted);
+        shared_covers.resize(parts.size());
+        for (std::size_t index = 0; index < parts.size(); ++index) {
+          const LightView &part = parts[index];
           // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
           GrTexInfo needed{shadow_lod(part.size), shadow_lod(part.size), GR_ASPECT_1x1,
                            GR_TEXFMT_ARGB_4444, nullptr};
@@ -239,7 +249,19 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           }
           const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
           auto step_start = Clock::now();
-          const CasterDraw draw = cover_caster_from_light(scene, caster, job.view, options, masked);  // 1
+          CasterDraw draw;  // 1
+          if (pierced && pierced->planar) {
+            draw = cover_caster_from_light(scene, caster, job.view, options);
+          } else {
+            std::optional<std::pair<LightView, CasterDraw>> &shared = shared_covers[index];
+            if (!shared) {
+              shared.emplace(part, CasterDraw{});
+              shared->second = cover_caster_from_light(scene, caster, shared->first, options);
+            }
+            job.view = shared->first;
+            draw = shared->second;
+            if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
+          }
           finish_step(0, step_start);
           // Step 3 needs only step 1's cover, not its pixels: a texture whose receivers give step
           // 5 nothing to draw and the footprint check nothing to measure changes no byte of the
