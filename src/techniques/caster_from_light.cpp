@@ -2,8 +2,9 @@
 // 0) into the back buffer or texture memory, clipped to its view's caster planes (and, for a
 // curved receiver it reaches through, only where nearer the light than that receiver's surface:
 // SurfaceMask), the cover of texture cells it touched (LightView::occupied, covered) and the
-// cells its silhouette crosses. Spaces: light view and light clip in; Glide screen (pixels, y
-// down) of the light's size x size view out.
+// cells its silhouette crosses. The cover is made before the drawing (cover_caster_from_light,
+// mask_caster_cover, then draw_caster_from_light), so step 3 can run in between. Spaces: light
+// view and light clip in; Glide screen (pixels, y down) of the light's size x size view out.
 #include "techniques/projected_shadow.h"
 
 #include "techniques/pierced_receivers.h"
