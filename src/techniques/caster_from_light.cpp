@@ -2,8 +2,9 @@
 // 0) into the back buffer or texture memory, clipped to its view's caster planes (and, for a
 // curved receiver it reaches through, only where nearer the light than that receiver's surface:
 // SurfaceMask), the cover of texture cells it touched (LightView::occupied, covered) and the
-// cells its silhouette crosses. Spaces: light view and light clip in; Glide screen (pixels, y
-// down) of the light's size x size view out.
+// cells its silhouette crosses. The cover is made before the drawing (cover_caster_from_light,
+// mask_caster_cover, then draw_caster_from_light), so step 3 can run in between. Spaces: light
+// view and light clip in; Glide screen (pixels, y down) of the light's size x size view out.
 #include "techniques/projected_shadow.h"
 
 #include "techniques/pierced_receivers.h"
@@ -83,10 +84,10 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
 
 }  // namespace
 
-// Step 1: the caster drawn flat from the light (its view from fit_light_view, light_view_fit.cpp).
-void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
-                              const ProjectedShadowOptions &options, FxU32 texture_address,
-                              const SurfaceMask *mask) {
+// Step 1's CPU part: the direct-path note, the caster's light-screen triangles and the cells
+// they cover (LightView::occupied, covered, silhouette).
+CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                                   const ProjectedShadowOptions &options) {
   const SceneObject &object = scene.objects[caster];
   view.direct_path = options.direct_path;
   if (!view.direct_path && (view.size > scene.width || view.size > scene.height)) {
@@ -96,32 +97,16 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
                 std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
                 "memory directly";
   }
-  // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
-  // (closed casters).
-  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
-    view.usable = false;
-    view.problem = std::string("step 1 cannot render into texture memory: ") +
-                   glideShimGetLastErrorMessage();
-    return;
-  }
-  const FxU32 side = static_cast<FxU32>(view.size);
-  grClipWindow(0, 0, side, side);
-  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
-  grDepthMask(FXFALSE);
-  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
-  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-  grChromakeyMode(GR_CHROMAKEY_DISABLE);
+  CasterDraw draw;
   // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
   // sheet) may show the light only its back, so it is drawn from both sides.
-  grCullMode(is_closed_surface(caster_mesh(object)) ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, 0);
-  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
-  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
-                 GR_COMBINE_OTHER_NONE, FXFALSE);
-  grConstantColorValue(kShadowRedArgb);
+  draw.closed = is_closed_surface(caster_mesh(object));
   const glm::mat4 to_view = view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
-  std::vector<GrVertex> screen(mesh.positions.size());
+  std::vector<GrVertex> &screen = draw.vertices;
+  screen.resize(mesh.positions.size());
+  draw.light_w.resize(mesh.positions.size());
+  draw.caster_clip.resize(mesh.positions.size());
   std::vector<float> depth(mesh.positions.size());  // light-view distance along the axis (w)
   std::vector<glm::vec4> in_view(mesh.positions.size());
   std::vector<bool> inside(mesh.positions.size(), true);
@@ -130,10 +115,9 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     for (const glm::vec4 &plane : view.caster_planes) {
       if (glm::dot(plane, in_view[i]) < 0.0f) inside[i] = false;
     }
-    const glm::vec4 clip = view.projection * in_view[i];
+    const glm::vec4 clip = draw.caster_clip[i] = view.projection * in_view[i];
     if (inside[i]) screen[i] = to_screen(clip, view.size, view.size);
-    if (inside[i] && mask) screen[i].oow = depth_oow(view, clip.w);
-    depth[i] = clip.w;
+    depth[i] = draw.light_w[i] = clip.w;
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
   const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
@@ -199,10 +183,11 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
   }
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
+  std::vector<float> fan_w;
   std::vector<const GrVertex *> corners;
   for (const glm::uvec3 &t : mesh.triangles) {
     if (inside[t.x] && inside[t.y] && inside[t.z]) {
-      guDrawTriangleWithClip(&screen[t.x], &screen[t.y], &screen[t.z]);  // tiles cut the caster
+      draw.triangles.push_back(t);  // tiles cut the caster
       const GrVertex *const triangle[3] = {&screen[t.x], &screen[t.y], &screen[t.z]};
       occupy(triangle, 3, std::min({depth[t.x], depth[t.y], depth[t.z]}));
       continue;
@@ -216,12 +201,13 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
     }
     if (polygon.size() < 3) continue;
     fan.clear();
+    fan_w.clear();
     corners.clear();
     float nearest = INFINITY;
     for (const ClipVertex &v : polygon) {
       const glm::vec4 clip = view.projection * v.clip;
       fan.push_back(to_screen(clip, view.size, view.size));
-      if (mask) fan.back().oow = depth_oow(view, clip.w);
+      fan_w.push_back(clip.w);
       nearest = std::min(nearest, clip.w);
     }
     for (const GrVertex &v : fan) corners.push_back(&v);
@@ -236,33 +222,87 @@ void render_caster_from_light(const Scene &scene, std::size_t caster, LightView 
         }
       }
     }
-    draw_fan(fan);
     occupy(corners.data(), corners.size(), nearest);
+    // Drawn as a fan of its first vertex, after the caster's own vertices in draw.vertices.
+    const auto first = static_cast<unsigned>(screen.size());
+    screen.insert(screen.end(), fan.begin(), fan.end());
+    draw.light_w.insert(draw.light_w.end(), fan_w.begin(), fan_w.end());
+    for (unsigned i = 2; i < fan.size(); ++i) draw.triangles.emplace_back(first, first + i - 1, first + i);
   }
-  if (mask) {
-    // The caster's cut by the receiver's surface runs through its triangles that pass through
-    // it: the fine cells of their bounding boxes join the silhouette.
-    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
-      if (!(*mask->caster_crossing)[k]) continue;
-      const glm::uvec3 &t = mesh.triangles[k];
-      glm::vec2 low(INFINITY), high(-INFINITY);
-      for (unsigned i : {t.x, t.y, t.z}) {
-        const glm::vec4 clip = view.projection * in_view[i];
-        if (!(clip.w > 0.0f)) continue;
-        const GrVertex v = to_screen(clip, view.size, view.size);
-        low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
-      }
-      if (!(low.x <= high.x)) continue;
-      for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
-        for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
-          view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
-        }
+  return draw;
+}
+
+void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
+                       const SurfaceMask &mask, CasterDraw &draw) {
+  // Every vertex takes its W from depth_oow (the mask surface's depth, pierced_surfaces.cpp).
+  for (std::size_t i = 0; i < draw.vertices.size(); ++i) {
+    draw.vertices[i].oow = depth_oow(view, draw.light_w[i]);
+  }
+  const Mesh &mesh = caster_mesh(scene.objects[caster]);
+  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
+  auto fine_index = [&](float texels) {
+    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
+  };
+  // The caster's cut by the receiver's surface runs through its triangles that pass through
+  // it: the fine cells of their bounding boxes join the silhouette.
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    if (!(*mask.caster_crossing)[k]) continue;
+    const glm::uvec3 &t = mesh.triangles[k];
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (unsigned i : {t.x, t.y, t.z}) {
+      const glm::vec4 &clip = draw.caster_clip[i];
+      if (!(clip.w > 0.0f)) continue;
+      const GrVertex v = to_screen(clip, view.size, view.size);
+      low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+    }
+    if (!(low.x <= high.x)) continue;
+    for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
+      for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
+        view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
-    grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   }
+}
+
+// Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
+// mask) into the back buffer's corner or texture memory.
+void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
+                            const SurfaceMask *mask, const CasterDraw &draw) {
+  // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
+  // (closed casters).
+  if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
+    view.usable = false;
+    view.problem = std::string("step 1 cannot render into texture memory: ") +
+                   glideShimGetLastErrorMessage();
+    return;
+  }
+  const FxU32 side = static_cast<FxU32>(view.size);
+  grClipWindow(0, 0, side, side);
+  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
+  grDepthMask(FXFALSE);
+  grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
+  grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
+  grChromakeyMode(GR_CHROMAKEY_DISABLE);
+  grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
+  grBufferClear(0, 0, 0);
+  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
+  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  grConstantColorValue(kShadowRedArgb);
+  for (const glm::uvec3 &t : draw.triangles) {
+    guDrawTriangleWithClip(&draw.vertices[t.x], &draw.vertices[t.y], &draw.vertices[t.z]);
+  }
+  if (mask) grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   if (view.direct_path) glideShimRenderToFrameBuffer();
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
+}
+
+void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                              const ProjectedShadowOptions &options, FxU32 texture_address,
+                              const SurfaceMask *mask) {
+  CasterDraw draw = cover_caster_from_light(scene, caster, view, options);
+  if (mask) mask_caster_cover(scene, caster, view, *mask, draw);
+  draw_caster_from_light(scene, view, texture_address, mask, draw);
 }
 
 }  // namespace gs

@@ -15,7 +15,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -189,6 +191,12 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       options.largest_texel_footprint_px > 0.0f ? options.largest_texel_footprint_px
       : point_sampled                           ? kLargestPointSampledFootprintPx
                                                 : kLargestTexelFootprintPx;
+  auto add_note = [&](const LightView &view) {  // once per frame
+    if (!view.note.empty() &&
+        std::find(result.warnings.begin(), result.warnings.end(), view.note) == result.warnings.end()) {
+      result.warnings.push_back(view.note);
+    }
+  };
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
     if (scene.lights[light].is_projector()) continue;  // slides cast no shadows
     for (std::size_t caster = 0; caster < scene.objects.size(); ++caster) {
@@ -207,8 +215,16 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       const FxU32 caster_address = next_address;
       // The caster's textures for the receivers marked in `receivers`; for a `pierced` one,
       // clipped to the light's side of its plane (world) or masked by its surface.
+      // Step 1's cover of each texture's view (in split_into_textures' order) as fitted, the
+      // same for the caster's texture for the other receivers and for each non-planar receiver
+      // it reaches through (the mask changes only W and adds the cut to the silhouette), so it
+      // is made once per caster.
+      std::vector<std::optional<std::pair<LightView, CasterDraw>>> shared_covers;
       auto cast = [&](const std::vector<bool> &receivers, const PiercedReceiver *pierced) {
-        for (LightView &part : split_into_textures(fitted)) {
+        const std::vector<LightView> parts = split_into_textures(fitted);
+        shared_covers.resize(parts.size());
+        for (std::size_t index = 0; index < parts.size(); ++index) {
+          const LightView &part = parts[index];
           // Each texture takes its own TMU memory; when 2 MB run out, the rest cast nothing.
           GrTexInfo needed{shadow_lod(part.size), shadow_lod(part.size), GR_ASPECT_1x1,
                            GR_TEXFMT_ARGB_4444, nullptr};
@@ -231,28 +247,49 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           } else if (pierced) {
             mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing};
           }
+          const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
           auto step_start = Clock::now();
-          render_caster_from_light(scene, caster, job.view, options, next_address,
-                                   mask.receiver ? &mask : nullptr);  // 1
+          CasterDraw draw;  // 1
+          if (pierced && pierced->planar) {
+            draw = cover_caster_from_light(scene, caster, job.view, options);
+          } else {
+            std::optional<std::pair<LightView, CasterDraw>> &shared = shared_covers[index];
+            if (!shared) {
+              shared.emplace(part, CasterDraw{});
+              shared->second = cover_caster_from_light(scene, caster, shared->first, options);
+            }
+            job.view = shared->first;
+            draw = shared->second;
+            if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
+          }
+          finish_step(0, step_start);
+          // Step 3 needs only step 1's cover, not its pixels: a texture whose receivers give step
+          // 5 nothing to draw and the footprint check nothing to measure changes no byte of the
+          // frame, so it is neither drawn nor read back (the other fighter, in front of a
+          // fighter's shadow, receives nothing from it in most frames of the demo).
+          step_start = Clock::now();
+          job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
+                                                  job.view, options, &receivers);  // 3
+          finish_step(2, step_start);
+          if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
+              std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),
+                           [](const ShadowTriangle &t) { return t.reaches_caster; })) {
+            add_note(job.view);
+            continue;
+          }
+          step_start = Clock::now();
+          draw_caster_from_light(scene, job.view, next_address, masked, draw);  // 1
           finish_step(0, step_start);
           if (!job.view.usable) {
             result.errors.push_back(job.view.problem);
             continue;
           }
-          if (!job.view.note.empty() &&
-              std::find(result.warnings.begin(), result.warnings.end(), job.view.note) ==
-                  result.warnings.end()) {
-            result.warnings.push_back(job.view.note);
-          }
+          add_note(job.view);
           step_start = Clock::now();
           job.texture = make_shadow_texture(job.view, options, next_address);  // 2
           finish_step(1, step_start);
           GrTexInfo info = job.texture.info;
           next_address += grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &info);
-          step_start = Clock::now();
-          job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                  job.view, options, &receivers);  // 3
-          finish_step(2, step_start);
           caster_jobs.push_back(std::move(job));
         }
       };

@@ -151,6 +151,26 @@ struct SurfaceMask {
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address,
                               const SurfaceMask *mask = nullptr);
+// render_caster_from_light in parts, so that step 3 (which needs only the cover) can run before
+// the drawing and a texture no receiver triangle would show is never drawn, and so that a
+// caster's textures for the same view share one cover. cover_caster_from_light sets the view's
+// path and cover and returns the triangles to draw; mask_caster_cover turns a copy of both into
+// a SurfaceMask's (W from depth_oow, the cut by the surface on the silhouette);
+// draw_caster_from_light draws them.
+struct CasterDraw {
+  std::vector<GrVertex> vertices;     // the light's Glide screen: the caster_mesh vertices, then
+                                      // those of its triangles clipped to the caster planes
+  std::vector<float> light_w;         // per vertex, its light clip w
+  std::vector<glm::vec4> caster_clip;  // per caster_mesh vertex, light clip space
+  std::vector<glm::uvec3> triangles;  // into vertices, in the mesh's order
+  bool closed = true;                 // back faces culled (a closed caster_mesh)
+};
+CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
+                                   const ProjectedShadowOptions &options);
+void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
+                       const SurfaceMask &mask, CasterDraw &draw);
+void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
+                            const SurfaceMask *mask, const CasterDraw &draw);
 // Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
 // GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
