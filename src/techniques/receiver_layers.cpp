@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <utility>
 
 namespace gs {
@@ -63,28 +62,37 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   if (clip.empty()) return layers;
   // Depths closer than this to a receiver's surface touch it (a crate resting on a mound).
   const float tolerance = 1e-3f * glm::length(high - low);
-  // Each edge once, sampled along its light clip segment (linear there), in the light's view.
+  // Every vertex, and each edge's inside once, sampled along its light clip segment (linear
+  // there) at least every kSampleTexels of the light's view.
   std::vector<EdgeSample> samples;
-  std::set<std::pair<unsigned, unsigned>> edges;
   glm::vec2 sample_low(INFINITY), sample_high(-INFINITY);
-  const float texels_per_ndc = 0.5f * static_cast<float>(view.size);
+  float farthest_sample = 0.0f;
+  auto add_sample = [&](const glm::vec4 &s) {
+    if (s.w <= view.caster_front || std::abs(s.x) > s.w || std::abs(s.y) > s.w) return;
+    samples.push_back({glm::vec2(s) / s.w, s.w});
+    farthest_sample = std::max(farthest_sample, s.w);
+    sample_low = glm::min(sample_low, samples.back().ndc);
+    sample_high = glm::max(sample_high, samples.back().ndc);
+  };
+  for (const glm::vec4 &p : clip) add_sample(p);
+  std::vector<std::pair<unsigned, unsigned>> edges;
+  edges.reserve(mesh.triangles.size() * 3);
   for (const glm::uvec3 &t : mesh.triangles) {
-    for (const auto &edge : {std::make_pair(t.x, t.y), std::make_pair(t.y, t.z),
-                             std::make_pair(t.z, t.x)}) {
-      if (!edges.insert(std::minmax(edge.first, edge.second)).second) continue;
-      const glm::vec4 &p = clip[edge.first], &q = clip[edge.second];
-      int steps = 1;
-      if (p.w > 0.0f && q.w > 0.0f) {
-        const float texels = glm::length(glm::vec2(p) / p.w - glm::vec2(q) / q.w) * texels_per_ndc;
-        steps = std::clamp(static_cast<int>(std::ceil(texels / kSampleTexels)), 1, kMostSamplesPerEdge);
-      }
-      for (int k = 0; k <= steps; ++k) {
-        const glm::vec4 s = p + (q - p) * (static_cast<float>(k) / static_cast<float>(steps));
-        if (s.w <= view.caster_front || std::abs(s.x) > s.w || std::abs(s.y) > s.w) continue;
-        samples.push_back({glm::vec2(s) / s.w, s.w});
-        sample_low = glm::min(sample_low, samples.back().ndc);
-        sample_high = glm::max(sample_high, samples.back().ndc);
-      }
+    edges.push_back(std::minmax(t.x, t.y));
+    edges.push_back(std::minmax(t.y, t.z));
+    edges.push_back(std::minmax(t.z, t.x));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const float texels_per_ndc = 0.5f * static_cast<float>(view.size);
+  for (const auto &edge : edges) {
+    const glm::vec4 &p = clip[edge.first], &q = clip[edge.second];
+    if (!(p.w > 0.0f && q.w > 0.0f)) continue;
+    const float texels = glm::length(glm::vec2(p) / p.w - glm::vec2(q) / q.w) * texels_per_ndc;
+    const int steps =
+        std::clamp(static_cast<int>(std::ceil(texels / kSampleTexels)), 1, kMostSamplesPerEdge);
+    for (int k = 1; k < steps; ++k) {
+      add_sample(p + (q - p) * (static_cast<float>(k) / static_cast<float>(steps)));
     }
   }
   if (samples.empty()) return layers;
@@ -112,8 +120,26 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   }
   const float texel = 2.0f / static_cast<float>(view.size);  // NDC, bilinear reach
 
-  std::vector<LayerTriangle> triangles;
+  std::vector<LayerTriangle> triangles, behind;
+  std::vector<glm::vec4> receiver_clip;
   std::vector<std::vector<std::size_t>> grid(kLayerGrid * kLayerGrid);
+  auto bucket = [&](const std::vector<LayerTriangle> &list) {
+    for (std::vector<std::size_t> &cell : grid) cell.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const LayerTriangle &lt = list[i];
+      const glm::vec2 t_low = glm::max(glm::min(lt.a, glm::min(lt.b, lt.c)), sample_low);
+      const glm::vec2 t_high = glm::min(glm::max(lt.a, glm::max(lt.b, lt.c)), sample_high);
+      for (int y = layer_cell_of(t_low.y); y <= layer_cell_of(t_high.y); ++y) {
+        for (int x = layer_cell_of(t_low.x); x <= layer_cell_of(t_high.x); ++x) {
+          grid[static_cast<std::size_t>(y * kLayerGrid + x)].push_back(i);
+        }
+      }
+    }
+  };
+  auto cell_at = [&](const glm::vec2 &ndc) -> const std::vector<std::size_t> & {
+    return grid[static_cast<std::size_t>(layer_cell_of(ndc.y) * kLayerGrid + layer_cell_of(ndc.x))];
+  };
+  std::vector<const EdgeSample *> unresolved;  // outside and hidden, nothing lit behind found yet
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
     if (r == caster || !receiver.object->receives_shadow) continue;
@@ -121,11 +147,14 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
                                     [r](const PiercedReceiver &p) { return p.receiver == r; });
     if (known != pierced.end() && known->planar) continue;  // clipped to its plane already
     triangles.clear();
-    for (std::vector<std::size_t> &cell : grid) cell.clear();
+    behind.clear();
+    receiver_clip.resize(receiver.world.size());
+    for (std::size_t i = 0; i < receiver_clip.size(); ++i) {
+      receiver_clip[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
+    }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-      const glm::vec4 ca = light_clip * glm::vec4(a, 1.0f), cb = light_clip * glm::vec4(b, 1.0f),
-                      cc = light_clip * glm::vec4(c, 1.0f);
+      const glm::vec4 &ca = receiver_clip[t.x], &cb = receiver_clip[t.y], &cc = receiver_clip[t.z];
       if (ca.w <= 0.0f || cb.w <= 0.0f || cc.w <= 0.0f) continue;  // reaches behind the light
       LayerTriangle lt{glm::vec2(ca) / ca.w, glm::vec2(cb) / cb.w, glm::vec2(cc) / cc.w,
                        {1.0f / ca.w, 1.0f / cb.w, 1.0f / cc.w},
@@ -134,25 +163,28 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       const glm::vec2 t_high = glm::max(lt.a, glm::max(lt.b, lt.c));
       if (glm::any(glm::lessThan(t_high, sample_low)) || glm::any(glm::lessThan(sample_high, t_low)))
         continue;
+      // Wholly behind every sample: it can only be a lit layer behind one (looked at below, if
+      // some sample needs it).
+      if (std::min(ca.w, std::min(cb.w, cc.w)) > farthest_sample + tolerance) {
+        if (lt.faces_light) behind.push_back(lt);
+        continue;
+      }
       const float farthest = std::max(ca.w, std::max(cb.w, cc.w));
       for (int y = shade_cell(t_low.y - texel); y <= shade_cell(t_high.y + texel) && !lt.shaded; ++y) {
         for (int x = shade_cell(t_low.x - texel); x <= shade_cell(t_high.x + texel); ++x) {
           if (farthest > cell_nearest[static_cast<std::size_t>(y * kCells + x)]) lt.shaded = true;
         }
       }
-      for (int y = layer_cell_of(t_low.y); y <= layer_cell_of(t_high.y); ++y) {
-        for (int x = layer_cell_of(t_low.x); x <= layer_cell_of(t_high.x); ++x) {
-          grid[static_cast<std::size_t>(y * kLayerGrid + x)].push_back(triangles.size());
-        }
-      }
       triangles.push_back(lt);
     }
     if (triangles.empty()) continue;
+    bucket(triangles);
     bool hides = false, between = false;
+    unresolved.clear();
     for (const EdgeSample &s : samples) {
       float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
       bool front_faces_light = false, hidden = false, lit_behind = false;
-      for (std::size_t i : grid[static_cast<std::size_t>(layer_cell_of(s.ndc.y) * kLayerGrid + layer_cell_of(s.ndc.x))]) {
+      for (std::size_t i : cell_at(s.ndc)) {
         glm::vec3 l;
         if (!layer_weights(triangles[i], s.ndc, l)) continue;
         const float w = 1.0f / glm::dot(l, triangles[i].inverse_w);
@@ -171,6 +203,17 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       hides = hides || outside;
       between = between || (outside && lit_behind);
       if (between) break;
+      if (outside) unresolved.push_back(&s);
+    }
+    if (!between && !unresolved.empty() && !behind.empty()) {
+      bucket(behind);
+      for (const EdgeSample *s : unresolved) {
+        for (std::size_t i : cell_at(s->ndc)) {
+          glm::vec3 l;
+          if (layer_weights(behind[i], s->ndc, l)) between = true;
+        }
+        if (between) break;
+      }
     }
     if (hides) layers.hiding.push_back(r);
     if (between) layers.between.push_back(r);
