@@ -120,7 +120,8 @@ bool write_heat_map(const media::ImageFiles &files, const media::FloatImage &a,
 
 MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
                          const std::vector<std::uint8_t> &truth,
-                         const std::vector<std::uint8_t> &receivers, int width, int height) {
+                         const std::vector<std::uint8_t> &receivers, int width, int height,
+                         const std::vector<std::uint8_t> &uncounted_shadow) {
   MaskErrors errors;
   const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
   // The API has no error channel: inputs shorter than width·height compare nothing.
@@ -131,6 +132,8 @@ MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
   // Boundary: a receiver whose 4-neighbour is also a receiver with the other truth value. The
   // neighbour must be a receiver because the edge of a receiver against the background (or an
   // excluded surface) is a silhouette, not a shadow edge. Both sides of an edge are boundary.
+  // A lit receiver beside an uncounted pixel in shadow is boundary too: that is a shadow's edge.
+  const bool self_edges = uncounted_shadow.size() >= count;
   std::vector<std::uint8_t> boundary(count, 0);
   bool any_boundary = false;
   const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
@@ -143,6 +146,7 @@ MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
         if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
         const std::size_t j = at(nx, ny);
         if (receivers[j] && (truth[j] != 0) != (truth[i] != 0)) boundary[i] = 1;
+        if (self_edges && !receivers[j] && uncounted_shadow[j] && truth[i] == 0) boundary[i] = 1;
       }
       any_boundary = any_boundary || boundary[i];
     }

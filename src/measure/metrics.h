@@ -23,9 +23,13 @@ struct MaskErrors {
 
 // `technique` and `truth` are 0/1 per pixel (rows from the top); `receivers` marks the pixels
 // that count (1) and those that do not (0: background, or excluded such as self-shadow).
+// `uncounted_shadow` (empty, or 0/1 per pixel) marks pixels left out of the count that are in
+// shadow all the same (an object's shadow on itself): their edge against a counted pixel the
+// truth calls lit is a true shadow edge, so a wrong pixel beside it is sampling, not interior.
 MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
                          const std::vector<std::uint8_t> &truth,
-                         const std::vector<std::uint8_t> &receivers, int width, int height);
+                         const std::vector<std::uint8_t> &receivers, int width, int height,
+                         const std::vector<std::uint8_t> &uncounted_shadow = {});
 
 struct ImageErrors {
   double mean = 0.0, max = 0.0, psnr = 0.0;  // channel values 0..1; PSNR in dB

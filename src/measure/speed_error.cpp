@@ -144,13 +144,14 @@ bool run_bench(const std::vector<BenchFrame> &frames,
     // The truth is the same for every attenuation mode: it evaluates the function exactly.
     GroundTruth truth;
     if (!compute_ground_truth(frame.scene, truth, error)) return false;
-    std::vector<std::uint8_t> receivers(truth.object.size());
+    std::vector<std::uint8_t> receivers(truth.object.size()), self_only_shadow(truth.object.size());
     long visible = 0, self_only = 0;
     for (std::size_t i = 0; i < receivers.size(); ++i) {
       const bool seen = truth.object[i] >= 0;
       visible += seen;
       self_only += seen && truth.self_shadow[i] && !truth.shadow[i];
       receivers[i] = seen && !(truth.self_shadow[i] && !truth.shadow[i]);
+      self_only_shadow[i] = seen && !receivers[i];
     }
     const int width = frame.scene.width, height = frame.scene.height;
     grGlideInit();
@@ -214,7 +215,7 @@ bool run_bench(const std::vector<BenchFrame> &frames,
       }
       technique->render_mask(scene);
       row.errors = compare_masks(read_mask_from_back_buffer(width, height), truth.shadow,
-                                 receivers, width, height);
+                                 receivers, width, height, self_only_shadow);
       row.self_shadow = visible > 0 ? static_cast<double>(self_only) / static_cast<double>(visible) : 0.0;
       rows.push_back(row);
     }

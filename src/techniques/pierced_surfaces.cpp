@@ -173,12 +173,16 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
   grDepthBufferFunction(GR_CMP_LESS);
   grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
   grColorMask(FXFALSE, FXFALSE);
-  // Light clip space: ahead of the light by a thousandth of the caster's front distance, and the
-  // view's square a little wider (so the edge of the texture is covered too).
+  // Light clip space: beyond the caster's front (w >= caster_front), and the view's square a
+  // little wider (so the edge of the texture is covered too). Step 3 never shades the part of a
+  // receiver nearer the light than the caster's front (receiver_coords.cpp), so that part needs
+  // no protecting from the caster behind it; left in, it would hide a caster part lying between
+  // it and a farther part of the same receiver (a post behind a ridge of its floor) from that
+  // farther part, which the caster does shadow.
   const std::vector<glm::vec4> planes = {
       {0.0f, 0.0f, 0.0f, 1.0f}, {-1.0f, 0.0f, 0.0f, 1.01f}, {1.0f, 0.0f, 0.0f, 1.01f},
       {0.0f, -1.0f, 0.0f, 1.01f}, {0.0f, 1.0f, 0.0f, 1.01f}};
-  const float nearest_w = 1e-3f * std::max(view.caster_front, 1e-3f);
+  const float nearest_w = std::max(view.caster_front, 1e-3f * std::max(view.caster_front, 1e-3f));
   const glm::mat4 light_clip = view.projection * view.view;
   std::vector<glm::vec4> clip(receiver.world.size());
   std::vector<unsigned> outside(receiver.world.size());

@@ -7,6 +7,7 @@
 #include "techniques/step_clock.h"
 
 #include "techniques/pierced_receivers.h"
+#include "techniques/receiver_layers.h"
 
 #include <glide_shim.h>
 #include <glideutl.h>
@@ -294,11 +295,32 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         }
       };
       start = Clock::now();
-      const std::vector<PiercedReceiver> pierced =
+      std::vector<PiercedReceiver> pierced =
           pierced_receivers(scene, frame, caster, scene.lights[light].position);
+      // Receivers hiding part of the caster from the light get the texture masked by their
+      // surface; one holding a caster part between two of its layers gets no shadow, by name.
+      const ReceiverLayers layers = receiver_layers(scene, frame, caster, fitted, pierced);
+      for (std::size_t r : layers.hiding) {
+        if (std::none_of(pierced.begin(), pierced.end(),
+                         [r](const PiercedReceiver &p) { return p.receiver == r; })) {
+          PiercedReceiver masked;
+          masked.receiver = r;
+          masked.planar = false;
+          masked.casts = true;
+          masked.caster_crossing.assign(caster_mesh(scene.objects[caster]).triangles.size(), 0);
+          pierced.push_back(std::move(masked));
+        }
+      }
+      for (std::size_t r : layers.between) {
+        result.errors.push_back(receiver_layers_error(scene, light, caster, r));
+        pierced.erase(std::remove_if(pierced.begin(), pierced.end(),
+                                     [r](const PiercedReceiver &p) { return p.receiver == r; }),
+                      pierced.end());
+      }
       result.times.ms[0] += elapsed_ms(start);
       std::vector<bool> receivers(scene.objects.size(), true);
       for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
+      for (std::size_t r : layers.between) receivers[r] = false;
       bool others = false;  // a receiver left for the whole caster's texture
       for (std::size_t r = 0; r < scene.objects.size(); ++r) {
         others = others || (receivers[r] && r != caster && scene.objects[r].receives_shadow);

@@ -32,6 +32,7 @@ inline const std::vector<std::string> kTechniques = {"projected", "projected-chr
 struct Truth {
   gs::GroundTruth exact;
   std::vector<std::uint8_t> receivers;
+  std::vector<std::uint8_t> self_only;  // left out of the count, in shadow all the same
   long shadow_pixels = 0;
 };
 
@@ -40,9 +41,11 @@ inline Truth truth_of(const gs::Scene &scene) {
   std::string error;
   EXPECT_TRUE(gs::compute_ground_truth(scene, truth.exact, error)) << error;
   truth.receivers.resize(truth.exact.object.size());
+  truth.self_only.resize(truth.exact.object.size());
   for (std::size_t i = 0; i < truth.receivers.size(); ++i) {
     const bool self_only = truth.exact.self_shadow[i] && !truth.exact.shadow[i];
     truth.receivers[i] = truth.exact.object[i] >= 0 && !self_only;
+    truth.self_only[i] = truth.exact.object[i] >= 0 && self_only;
     truth.shadow_pixels += truth.exact.shadow[i];
   }
   return truth;
@@ -87,7 +90,7 @@ inline Outcome run(const std::string &name, const gs::Scene &scene, const Truth 
   for (FxU16 p : pixels) outcome.mask.push_back(p != 0);
   outcome.shadowed = std::accumulate(outcome.mask.begin(), outcome.mask.end(), 0L);
   outcome.errors = gs::compare_masks(outcome.mask, truth.exact.shadow, truth.receivers,
-                                     scene.width, scene.height);
+                                     scene.width, scene.height, truth.self_only);
   return outcome;
 }
 

@@ -173,10 +173,12 @@ TEST_F(ProjectedShadowTest, A512MapIsFourVoodooTexturesThatShadowLikeOne) {
 
 TEST_F(ProjectedShadowTest, RunningOutOfTmuMemoryIsReported) {
   // 20 casters at 256x256 ARGB_4444 need 2.5 MB; the TMU has 2 MB: 16 fit, the rest say so.
+  // The boxes stand apart: touching ones hide each other's sides from the light, and each such
+  // pair takes one more texture (receiver_layers.h).
   gs::Scene scene = box_over_floor();
   for (int i = 0; i < 19; ++i) {
     scene.objects.push_back(object("box " + std::to_string(i), gs::make_box(glm::vec3(0.1f)),
-                                   {-2.0f + 0.2f * static_cast<float>(i), 1.0f, 1.0f}));
+                                   {-3.2f + 0.35f * static_cast<float>(i), 1.0f, 1.0f}));
   }
   gs::ProjectedShadowOptions options;
   options.size = 256;

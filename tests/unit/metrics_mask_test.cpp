@@ -141,6 +141,29 @@ TEST(CompareMasks, NoTrueBoundaryReportsImageDiagonal) {
   EXPECT_DOUBLE_EQ(e.max_distance_px, 50.0);
 }
 
+// An object's shadow on itself is left out of the count, but its edge is a true shadow edge: a
+// lit receiver pixel beside an uncounted shadowed pixel is boundary, so a technique that draws
+// that self-shadow a pixel wide of the truth makes band errors, not interior ones. Without the
+// uncounted shadow the same pixels are interior, as are pixels two away with it.
+TEST(CompareMasks, EdgeOfAnUncountedShadowIsABoundary) {
+  Mask truth(40, 30), technique(40, 30), receivers(40, 30, 1), self_shadow(40, 30);
+  self_shadow.fill(0, 0, 20, 30, 1);  // the left half: only its own object shadows it
+  receivers.fill(0, 0, 20, 30, 0);
+  technique.fill(0, 0, 22, 30, 1);    // the self-shadow drawn two columns too wide
+  const MaskErrors with_edge = compare_masks(technique.pixels, truth.pixels, receivers.pixels,
+                                             40, 30, self_shadow.pixels);
+  EXPECT_EQ(with_edge.false_shadow, 60);
+  EXPECT_DOUBLE_EQ(with_edge.false_shadow_band, 60.0 / (20 * 30));
+  EXPECT_EQ(interior(with_edge), 0.0);
+  EXPECT_DOUBLE_EQ(with_edge.max_distance_px, 1.0);
+  const MaskErrors without = compare(technique, truth, receivers);
+  EXPECT_DOUBLE_EQ(without.false_shadow_interior, 60.0 / (20 * 30));
+  technique.fill(22, 0, 23, 30, 1);   // a third column: two pixels from the edge, interior
+  const MaskErrors wider = compare_masks(technique.pixels, truth.pixels, receivers.pixels, 40,
+                                         30, self_shadow.pixels);
+  EXPECT_DOUBLE_EQ(wider.false_shadow_interior, 30.0 / (20 * 30));
+}
+
 // Deterministic pseudo-random masks so the test is repeatable.
 std::uint32_t next(std::uint32_t &state) {
   state = state * 1664525u + 1013904223u;

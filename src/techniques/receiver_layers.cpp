@@ -1,0 +1,233 @@
+// Receivers that hide part of a caster from the light, and those that hold a caster part between
+// two of their layers (receiver_layers.h). Light clip space: the caster's edges sampled every few
+// texels, each receiver's triangles sorted into a grid of the light's screen (NDC), and per
+// sample the receiver surfaces on the light's ray through it, with their depth (w, metres along
+// the light's axis) and whether they face the light.
+#include "techniques/receiver_layers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace gs {
+namespace {
+
+constexpr int kLayerGrid = 32;              // cells a side of the light's screen, NDC [-1, 1]
+constexpr float kSampleTexels = 4.0f;  // caster edges are sampled at least this often
+constexpr int kMostSamplesPerEdge = 64;
+
+struct EdgeSample {
+  glm::vec2 ndc;
+  float w;  // light-view depth, metres
+};
+
+struct LayerTriangle {
+  glm::vec2 a, b, c;           // NDC
+  glm::vec3 inverse_w;         // 1 / w at a, b, c: linear in NDC
+  bool faces_light = false;
+  bool shaded = false;         // step 3 may shade it with the caster's shadow
+};
+
+int layer_cell_of(float ndc) {
+  return std::clamp(static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kLayerGrid)), 0, kLayerGrid - 1);
+}
+
+// Barycentric weights of p in the NDC triangle; false when outside (or degenerate).
+bool layer_weights(const LayerTriangle &t, const glm::vec2 &p, glm::vec3 &l) {
+  const glm::vec2 e0 = t.b - t.a, e1 = t.c - t.a, d = p - t.a;
+  const float area = e0.x * e1.y - e0.y * e1.x;
+  if (std::abs(area) < 1e-12f) return false;
+  const float u = (d.x * e1.y - d.y * e1.x) / area, v = (e0.x * d.y - e0.y * d.x) / area;
+  if (u < 0.0f || v < 0.0f || u + v > 1.0f) return false;
+  l = {1.0f - u - v, u, v};
+  return true;
+}
+
+}  // namespace
+
+ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, std::size_t caster,
+                               const LightView &view,
+                               const std::vector<PiercedReceiver> &pierced) {
+  ReceiverLayers layers;
+  const glm::mat4 light_clip = view.projection * view.view;
+  const SceneObject &object = scene.objects[caster];
+  const Mesh &mesh = caster_mesh(object);
+  std::vector<glm::vec4> clip(mesh.positions.size());
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < clip.size(); ++i) {
+    const glm::vec4 world = object.model_to_world * glm::vec4(mesh.positions[i], 1.0f);
+    low = glm::min(low, glm::vec3(world)), high = glm::max(high, glm::vec3(world));
+    clip[i] = light_clip * world;
+  }
+  if (clip.empty()) return layers;
+  // Depths closer than this to a receiver's surface touch it (a crate resting on a mound).
+  const float tolerance = 1e-3f * glm::length(high - low);
+  // Every vertex, and each edge's inside once, sampled along its light clip segment (linear
+  // there) at least every kSampleTexels of the light's view.
+  std::vector<EdgeSample> samples;
+  glm::vec2 sample_low(INFINITY), sample_high(-INFINITY);
+  float farthest_sample = 0.0f;
+  auto add_sample = [&](const glm::vec4 &s) {
+    if (s.w <= view.caster_front || std::abs(s.x) > s.w || std::abs(s.y) > s.w) return;
+    samples.push_back({glm::vec2(s) / s.w, s.w});
+    farthest_sample = std::max(farthest_sample, s.w);
+    sample_low = glm::min(sample_low, samples.back().ndc);
+    sample_high = glm::max(sample_high, samples.back().ndc);
+  };
+  for (const glm::vec4 &p : clip) add_sample(p);
+  std::vector<std::pair<unsigned, unsigned>> edges;
+  edges.reserve(mesh.triangles.size() * 3);
+  for (const glm::uvec3 &t : mesh.triangles) {
+    edges.push_back(std::minmax(t.x, t.y));
+    edges.push_back(std::minmax(t.y, t.z));
+    edges.push_back(std::minmax(t.z, t.x));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const float texels_per_ndc = 0.5f * static_cast<float>(view.size);
+  for (const auto &edge : edges) {
+    const glm::vec4 &p = clip[edge.first], &q = clip[edge.second];
+    if (!(p.w > 0.0f && q.w > 0.0f)) continue;
+    const float texels = glm::length(glm::vec2(p) / p.w - glm::vec2(q) / q.w) * texels_per_ndc;
+    const int steps =
+        std::clamp(static_cast<int>(std::ceil(texels / kSampleTexels)), 1, kMostSamplesPerEdge);
+    for (int k = 1; k < steps; ++k) {
+      add_sample(p + (q - p) * (static_cast<float>(k) / static_cast<float>(steps)));
+    }
+  }
+  if (samples.empty()) return layers;
+  // Step 3's cover of the texture (LightView::nearest, filled in step 1): per cell of 16 a side,
+  // the nearest depth of every caster triangle whose bounding box touches it. A receiver
+  // triangle wholly nearer the light than that in every cell it touches is never shaded with
+  // this caster's shadow (receiver_coords.cpp), so what it hides needs no masking.
+  constexpr int kCells = LightView::kCells;
+  auto shade_cell = [](float ndc) {
+    return std::clamp(static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kCells)), 0, kCells - 1);
+  };
+  std::vector<float> cell_nearest(kCells * kCells, INFINITY);
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec4 &a = clip[t.x], &b = clip[t.y], &c = clip[t.z];
+    if (a.w <= 0.0f || b.w <= 0.0f || c.w <= 0.0f) continue;
+    const glm::vec2 pa = glm::vec2(a) / a.w, pb = glm::vec2(b) / b.w, pc = glm::vec2(c) / c.w;
+    const glm::vec2 t_low = glm::min(pa, glm::min(pb, pc)), t_high = glm::max(pa, glm::max(pb, pc));
+    const float nearest = std::min(a.w, std::min(b.w, c.w));
+    for (int y = shade_cell(t_low.y); y <= shade_cell(t_high.y); ++y) {
+      for (int x = shade_cell(t_low.x); x <= shade_cell(t_high.x); ++x) {
+        float &cell = cell_nearest[static_cast<std::size_t>(y * kCells + x)];
+        cell = std::min(cell, nearest);
+      }
+    }
+  }
+  const float texel = 2.0f / static_cast<float>(view.size);  // NDC, bilinear reach
+
+  std::vector<LayerTriangle> triangles, behind;
+  std::vector<glm::vec4> receiver_clip;
+  std::vector<std::vector<std::size_t>> grid(kLayerGrid * kLayerGrid);
+  auto bucket = [&](const std::vector<LayerTriangle> &list) {
+    for (std::vector<std::size_t> &cell : grid) cell.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const LayerTriangle &lt = list[i];
+      const glm::vec2 t_low = glm::max(glm::min(lt.a, glm::min(lt.b, lt.c)), sample_low);
+      const glm::vec2 t_high = glm::min(glm::max(lt.a, glm::max(lt.b, lt.c)), sample_high);
+      for (int y = layer_cell_of(t_low.y); y <= layer_cell_of(t_high.y); ++y) {
+        for (int x = layer_cell_of(t_low.x); x <= layer_cell_of(t_high.x); ++x) {
+          grid[static_cast<std::size_t>(y * kLayerGrid + x)].push_back(i);
+        }
+      }
+    }
+  };
+  auto cell_at = [&](const glm::vec2 &ndc) -> const std::vector<std::size_t> & {
+    return grid[static_cast<std::size_t>(layer_cell_of(ndc.y) * kLayerGrid + layer_cell_of(ndc.x))];
+  };
+  std::vector<const EdgeSample *> unresolved;  // outside and hidden, nothing lit behind found yet
+  for (std::size_t r = 0; r < frame.objects.size(); ++r) {
+    const ProjectedObject &receiver = frame.objects[r];
+    if (r == caster || !receiver.object->receives_shadow) continue;
+    const auto known = std::find_if(pierced.begin(), pierced.end(),
+                                    [r](const PiercedReceiver &p) { return p.receiver == r; });
+    if (known != pierced.end() && known->planar) continue;  // clipped to its plane already
+    triangles.clear();
+    behind.clear();
+    receiver_clip.resize(receiver.world.size());
+    for (std::size_t i = 0; i < receiver_clip.size(); ++i) {
+      receiver_clip[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
+    }
+    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+      const glm::vec4 &ca = receiver_clip[t.x], &cb = receiver_clip[t.y], &cc = receiver_clip[t.z];
+      if (ca.w <= 0.0f || cb.w <= 0.0f || cc.w <= 0.0f) continue;  // reaches behind the light
+      LayerTriangle lt{glm::vec2(ca) / ca.w, glm::vec2(cb) / cb.w, glm::vec2(cc) / cc.w,
+                       {1.0f / ca.w, 1.0f / cb.w, 1.0f / cc.w},
+                       glm::dot(glm::cross(b - a, c - a), view.position - a) > 0.0f};
+      const glm::vec2 t_low = glm::min(lt.a, glm::min(lt.b, lt.c));
+      const glm::vec2 t_high = glm::max(lt.a, glm::max(lt.b, lt.c));
+      if (glm::any(glm::lessThan(t_high, sample_low)) || glm::any(glm::lessThan(sample_high, t_low)))
+        continue;
+      // Wholly behind every sample: it can only be a lit layer behind one (looked at below, if
+      // some sample needs it).
+      if (std::min(ca.w, std::min(cb.w, cc.w)) > farthest_sample + tolerance) {
+        if (lt.faces_light) behind.push_back(lt);
+        continue;
+      }
+      const float farthest = std::max(ca.w, std::max(cb.w, cc.w));
+      for (int y = shade_cell(t_low.y - texel); y <= shade_cell(t_high.y + texel) && !lt.shaded; ++y) {
+        for (int x = shade_cell(t_low.x - texel); x <= shade_cell(t_high.x + texel); ++x) {
+          if (farthest > cell_nearest[static_cast<std::size_t>(y * kCells + x)]) lt.shaded = true;
+        }
+      }
+      triangles.push_back(lt);
+    }
+    if (triangles.empty()) continue;
+    bucket(triangles);
+    bool hides = false, between = false;
+    unresolved.clear();
+    for (const EdgeSample &s : samples) {
+      float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
+      bool front_faces_light = false, hidden = false, lit_behind = false;
+      for (std::size_t i : cell_at(s.ndc)) {
+        glm::vec3 l;
+        if (!layer_weights(triangles[i], s.ndc, l)) continue;
+        const float w = 1.0f / glm::dot(l, triangles[i].inverse_w);
+        if (w < s.w - tolerance) {
+          if (w > nearest_front) nearest_front = w, front_faces_light = triangles[i].faces_light;
+          hidden = hidden || (triangles[i].faces_light && triangles[i].shaded &&
+                              w >= view.caster_front);
+        } else if (w > s.w + tolerance) {
+          lit_behind = lit_behind || triangles[i].faces_light;
+        }
+      }
+      // Only a sample outside the receiver (the surface just in front of it faces away from the
+      // light) needs the mask: one inside it (a caster sunk whole into a mound) is behind a
+      // surface step 3 does not shade with its shadow, or a pierced one masks it already.
+      const bool outside = hidden && !front_faces_light;
+      hides = hides || outside;
+      between = between || (outside && lit_behind);
+      if (between) break;
+      if (outside) unresolved.push_back(&s);
+    }
+    if (!between && !unresolved.empty() && !behind.empty()) {
+      bucket(behind);
+      for (const EdgeSample *s : unresolved) {
+        for (std::size_t i : cell_at(s->ndc)) {
+          glm::vec3 l;
+          if (layer_weights(behind[i], s->ndc, l)) between = true;
+        }
+        if (between) break;
+      }
+    }
+    if (hides) layers.hiding.push_back(r);
+    if (between) layers.between.push_back(r);
+  }
+  return layers;
+}
+
+std::string receiver_layers_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver) {
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
+         "': part of the caster lies between two parts of '" + scene.objects[receiver].name +
+         "' as the light sees them (the nearer part hides it, the farther is in its shadow), "
+         "which one shadow texture cannot show; it casts no shadow on '" +
+         scene.objects[receiver].name + "' from this light";
+}
+
+}  // namespace gs

@@ -1,0 +1,37 @@
+// A receiver that is not planar can lie between the light and part of a caster it does not
+// touch (a drum's cap in front of a stick beside it), or hold a caster part between two of its
+// own layers (a pole reaching over a ridge, its middle behind the ridge and above the floor).
+// Seen from the light, per sample of the caster's edges: the first needs the texture masked by
+// the receiver's surface (pierced_receivers.h) so the nearer layer stays lit; the second no
+// single texture can serve, and the projected technique refuses it by name.
+#pragma once
+
+#include "techniques/pierced_receivers.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gs {
+
+struct ReceiverLayers {
+  // Receivers (indices into scene.objects) whose light-facing surface, beyond the caster's
+  // front, hides a sample of the caster from the light.
+  std::vector<std::size_t> hiding;
+  // Of those, the receivers where such a hidden sample lies outside the receiver (the nearest
+  // surface in front of it faces away from the light) with a light-facing surface of the same
+  // receiver behind it: that surface is in the sample's shadow, the nearer one is not.
+  std::vector<std::size_t> between;
+};
+
+// Tests every non-planar receiver of `caster`'s shadow not already in `pierced` (and the
+// non-planar pierced ones, for `between`) in the light's view `view` (step 1's, world in).
+ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, std::size_t caster,
+                               const LightView &view,
+                               const std::vector<PiercedReceiver> &pierced);
+
+// The per-frame error for a receiver in ReceiverLayers::between.
+std::string receiver_layers_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver);
+
+}  // namespace gs
