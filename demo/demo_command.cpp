@@ -78,7 +78,6 @@ int run_demo(const DemoOptions &o) {
   for (const std::string &line : table) std::printf("%s\n", line.c_str());
   if (o.sheet) {
     const std::string path = (std::filesystem::path(o.out_dir) / "contact_sheet.png").string();
-    std::string error;
     if (!media::write_contact_sheet(run.frame_files, path, error)) {
       std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), error.c_str());
       return 1;
@@ -87,7 +86,6 @@ int run_demo(const DemoOptions &o) {
   }
   if (o.gif) {
     const std::string path = (std::filesystem::path(o.out_dir) / "fight.gif").string();
-    std::string error;
     if (!media::write_gif(run.frame_files, path, o.fps, error)) {
       std::fprintf(stderr, "glideshadows demo: cannot write %s: %s\n", path.c_str(), error.c_str());
       return 1;
