@@ -15,6 +15,8 @@ namespace {
 // Vertices this far out are still clipped in float (guclip.c does the same); beyond it, float
 // precision in the interpolation is gone and the call is refused.
 constexpr float kMaxClippedCoordinate = 1.0e7f;
+static_assert(kMaxClippedCoordinate * 16.0f < 2147483648.0f,
+              "to_shim_vertex snaps a checked coordinate through a 32-bit integer (draw.cpp)");
 
 ShimVertex lerp(const ShimVertex &a, const ShimVertex &b, float t) {
   auto mix = [t](float u, float v) { return u + (v - u) * t; };

@@ -5,6 +5,7 @@
 #include "depth.h"
 #include "gl/shader_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -24,87 +25,153 @@ float remove_snap_offset(float v) {
 
 }  // namespace
 
+namespace {
+
+// snap for the coordinates the checks let through (|coordinate| <= 1e7, so |16 coordinate| <
+// 2^31): std::round(coordinate * 16) / 16 without the libm call the baseline x86-64 target
+// makes of it. The product is exact, its truncation toward zero and the fraction left are
+// exact, and a fraction of at least one half steps away from zero as std::round does; copysign
+// keeps a negative zero negative.
+inline float snap_checked(float coordinate) {
+  const float scaled = coordinate * 16.0f;
+  const std::int32_t whole = static_cast<std::int32_t>(scaled);
+  const float fraction = scaled - static_cast<float>(whole);
+  const std::int32_t rounded = whole + (fraction >= 0.5f ? 1 : 0) - (fraction <= -0.5f ? 1 : 0);
+  return std::copysign(static_cast<float>(rounded) * 0.0625f, scaled);
+}
+
+}  // namespace
+
 float snap(float coordinate) {
-  // std::round(coordinate * 16) / 16, without the libm call the baseline x86-64 target makes of
-  // it (a fifth of the shim's CPU time per small triangle): the product is exact, and in double
-  // its integer part plus one half is exact too below 2^52, so truncating that rounds halves
-  // away from zero as std::round does (negative zero stays negative).
-  const double scaled = static_cast<double>(coordinate) * 16.0;
-  if (!(std::fabs(scaled) < 4503599627370496.0)) return std::round(coordinate * 16.0f) / 16.0f;
-  const double magnitude = static_cast<double>(static_cast<std::int64_t>(std::fabs(scaled) + 0.5));
-  return static_cast<float>(std::signbit(scaled) ? -magnitude : magnitude) / 16.0f;
+  if (!(std::fabs(coordinate) < 1.0e8f)) return std::round(coordinate * 16.0f) / 16.0f;
+  return snap_checked(coordinate);
 }
 
 VertexFields fields_read(const GlideContext &context) {
-  const CombineUnit &color = context.color_path.color;
-  const CombineUnit &alpha = context.color_path.alpha;
+  const ColorPathState &path = context.color_path;
+  const CombineUnit &color = path.color;
+  const CombineUnit &alpha = path.alpha;
+  const GrDepthBufferMode_t depth_mode = context.depth.mode;
   VertexFields fields{};
   // In delta0 mode the driver sends no vertex colour: the iterators hold grConstantColorValue4's.
-  fields.rgb = !context.color_path.delta0 &&
+  fields.delta0 = path.delta0;
+  fields.rgb = !path.delta0 &&
                (color.local == GR_COMBINE_LOCAL_ITERATED || color.other == GR_COMBINE_OTHER_ITERATED ||
-                context.color_path.alpha_controls_itrgb);
+                path.alpha_controls_itrgb);
+  if (path.delta0) {
+    // Fr/Fg/Fb hold the colour in 12.12 with zero slopes; the pixel sees its integer part.
+    for (int i = 0; i < 3; ++i) fields.delta0_rgb[i] = std::floor(path.iterated4[i + 1]);
+  }
   fields.alpha = alpha.local == GR_COMBINE_LOCAL_ITERATED || alpha.other == GR_COMBINE_OTHER_ITERATED;
-  fields.texture = reads_texture(context.color_path);
+  fields.texture = reads_texture(path);
   fields.fog = context.fog.mode & 0xFF;
   fields.alpha = fields.alpha || fields.fog == GR_FOG_WITH_ITERATED_ALPHA;
-  fields.ooz = is_z_buffer(context.depth.mode) || fields.fog == GR_FOG_WITH_ITERATED_Z;
-  fields.oow = is_w_buffer(context.depth.mode) || fields.texture || fields.fog == GR_FOG_WITH_TABLE;
+  fields.ooz = is_z_buffer(depth_mode) || fields.fog == GR_FOG_WITH_ITERATED_Z;
+  fields.oow = is_w_buffer(depth_mode) || fields.texture || fields.fog == GR_FOG_WITH_TABLE;
+  // GR_STWHINT_W_DIFF_TMU0: TMU0 divides by its own w (the projective-texture path).
+  fields.q_from_tmu = (context.raster.stw_hint & GR_STWHINT_W_DIFF_TMU0) != 0;
+  fields.depth = &context.depth;
+  const bool unbiased = compares_to_bias(depth_mode) || context.depth.bias_level == 0;
+  fields.depth_source = depth_mode == GR_DEPTHBUFFER_DISABLE            ? DepthSource::None
+                        : is_w_buffer(depth_mode) && unbiased ? DepthSource::UnbiasedW
+                                                                        : DepthSource::General;
   return fields;
+}
+
+namespace {
+
+// The reports of check_vertex, out of its way: the checks themselves are a few instructions.
+[[gnu::cold, gnu::noinline]] void report_bad_vertex(GlideContext &context, const char *function,
+                                                     bool finite, float x, float y,
+                                                     float max_coordinate) {
+  if (!finite) {
+    context.report(GLIDESHIM_ERR_INVALID_VALUE,
+                   std::string(function) + ": a vertex field the current state reads is NaN or infinite");
+    return;
+  }
+  context.report(GLIDESHIM_ERR_INVALID_VALUE,
+                 std::string(function) + ": vertex (" + std::to_string(x) + ", " +
+                     std::to_string(y) + ") is beyond +-" + std::to_string(max_coordinate));
+}
+
+inline bool vertex_is_valid(GlideContext &context, const VertexFields &fields, const GrVertex &in,
+                            const char *function, float max_coordinate) {
+  const float x = remove_snap_offset(in.x), y = remove_snap_offset(in.y);
+  // v * 0 is NaN exactly when v is NaN or infinite, and a NaN survives the sum: one test for
+  // every field the current state reads.
+  float probe = x * 0.0f + y * 0.0f;
+  if (fields.rgb) probe += in.r * 0.0f + in.g * 0.0f + in.b * 0.0f;
+  if (fields.alpha) probe += in.a * 0.0f;
+  if (fields.ooz) probe += in.ooz * 0.0f;
+  if (fields.oow) probe += in.oow * 0.0f;
+  if (fields.texture) {
+    probe += in.tmuvtx[0].sow * 0.0f + in.tmuvtx[0].tow * 0.0f + in.tmuvtx[0].oow * 0.0f;
+  }
+  const bool finite = !std::isnan(probe);
+  if (finite && std::fabs(x) <= max_coordinate && std::fabs(y) <= max_coordinate) return true;
+  report_bad_vertex(context, function, finite, x, y, max_coordinate);
+  return false;
+}
+
+inline void convert_vertex(const VertexFields &fields, const GrVertex &in, ShimVertex &out) {
+  out.x = snap_checked(remove_snap_offset(in.x));  // checked: |x|, |y| <= 1e7
+  out.y = snap_checked(remove_snap_offset(in.y));
+  switch (fields.depth_source) {
+    case DepthSource::None: out.depth = 0.0f; break;
+    case DepthSource::UnbiasedW: out.depth = std::clamp(std::min(in.oow, 1.0f), 0.0f, 1.0f); break;
+    default:
+      out.depth = vertex_depth(*fields.depth, fields.ooz ? in.ooz : 0.0f, fields.oow ? in.oow : 0.0f);
+  }
+  if (fields.delta0) {
+    out.r = fields.delta0_rgb[0], out.g = fields.delta0_rgb[1], out.b = fields.delta0_rgb[2];
+  } else if (fields.rgb) {
+    out.r = in.r, out.g = in.g, out.b = in.b;
+  } else {
+    out.r = out.g = out.b = 0.0f;
+  }
+  out.a = fields.alpha ? in.a : 0.0f;
+  out.fog = fields.fog == GR_FOG_WITH_TABLE ? in.oow : fields.fog == GR_FOG_WITH_ITERATED_Z ? in.ooz : 0.0f;
+  if (fields.texture) {
+    out.sow = in.tmuvtx[0].sow;
+    out.tow = in.tmuvtx[0].tow;
+    out.q = fields.q_from_tmu ? in.tmuvtx[0].oow : in.oow;
+  } else {
+    out.sow = out.tow = out.q = 0.0f;
+  }
+}
+
+}  // namespace
+
+bool check_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
+                  const char *function, float max_coordinate) {
+  return vertex_is_valid(context, fields, in, function, max_coordinate);
+}
+
+void write_vertex(const VertexFields &fields, const GrVertex &in, ShimVertex &out) {
+  convert_vertex(fields, in, out);
 }
 
 bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
                     ShimVertex &out, const char *function, float max_coordinate) {
-  out = ShimVertex{};
-  const float x = remove_snap_offset(in.x), y = remove_snap_offset(in.y);
-  bool finite = std::isfinite(x) && std::isfinite(y);
-  if (fields.rgb) finite = finite && std::isfinite(in.r) && std::isfinite(in.g) && std::isfinite(in.b);
-  if (fields.alpha) finite = finite && std::isfinite(in.a);
-  if (fields.ooz) finite = finite && std::isfinite(in.ooz);
-  if (fields.oow) finite = finite && std::isfinite(in.oow);
-  if (fields.texture) {
-    finite = finite && std::isfinite(in.tmuvtx[0].sow) && std::isfinite(in.tmuvtx[0].tow) &&
-             std::isfinite(in.tmuvtx[0].oow);
-  }
-  if (!finite) {
-    context.report(GLIDESHIM_ERR_INVALID_VALUE,
-                   std::string(function) + ": a vertex field the current state reads is NaN or infinite");
-    return false;
-  }
-  if (std::fabs(x) > max_coordinate || std::fabs(y) > max_coordinate) {
-    context.report(GLIDESHIM_ERR_INVALID_VALUE,
-                   std::string(function) + ": vertex (" + std::to_string(x) + ", " +
-                       std::to_string(y) + ") is beyond +-" + std::to_string(max_coordinate));
-    return false;
-  }
-  out.x = snap(x);
-  out.y = snap(y);
-  if (fields.rgb) out.r = in.r, out.g = in.g, out.b = in.b;
-  if (context.color_path.delta0) {
-    // Fr/Fg/Fb hold the colour in 12.12 with zero slopes; the pixel sees its integer part.
-    const float *rgb = &context.color_path.iterated4[1];
-    out.r = std::floor(rgb[0]), out.g = std::floor(rgb[1]), out.b = std::floor(rgb[2]);
-  }
-  if (fields.alpha) out.a = in.a;
-  out.depth = vertex_depth(context.depth, fields.ooz ? in.ooz : 0.0f, fields.oow ? in.oow : 0.0f);
-  if (fields.fog == GR_FOG_WITH_TABLE) out.fog = in.oow;
-  if (fields.fog == GR_FOG_WITH_ITERATED_Z) out.fog = in.ooz;
-  if (fields.texture) {
-    out.sow = in.tmuvtx[0].sow;
-    out.tow = in.tmuvtx[0].tow;
-    // GR_STWHINT_W_DIFF_TMU0: TMU0 divides by its own w (the projective-texture path).
-    out.q = (context.raster.stw_hint & GR_STWHINT_W_DIFF_TMU0) != 0 ? in.tmuvtx[0].oow : in.oow;
-  }
+  if (!check_vertex(context, fields, in, function, max_coordinate)) return false;
+  write_vertex(fields, in, out);
+  return true;
+}
+
+bool keeps_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
+                    const ShimVertex &c) {
+  const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  ++context.perf.triangles_processed;
+  if (area == 0.0f) return false;
+  if (context.raster.cull == GR_CULL_NEGATIVE && area < 0.0f) return false;
+  if (context.raster.cull == GR_CULL_POSITIVE && area > 0.0f) return false;
+  ++context.perf.triangles_drawn;
   return true;
 }
 
 void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
                     const ShimVertex &c) {
-  const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-  ++context.perf.triangles_processed;
-  if (area == 0.0f) return;
-  if (context.raster.cull == GR_CULL_NEGATIVE && area < 0.0f) return;
-  if (context.raster.cull == GR_CULL_POSITIVE && area > 0.0f) return;
-  ++context.perf.triangles_drawn;
+  if (!keeps_triangle(context, a, b, c)) return;
   const ShimVertex triangle[3] = {a, b, c};
   context.renderer->queue(Primitive::Triangles, triangle, 3);
 }
@@ -229,13 +296,18 @@ void grDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
     return;
   }
   const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
-  glide_shim::ShimVertex v[3];
-  if (!glide_shim::to_shim_vertex(ctx, fields, *a, v[0], "grDrawTriangle") ||
-      !glide_shim::to_shim_vertex(ctx, fields, *b, v[1], "grDrawTriangle") ||
-      !glide_shim::to_shim_vertex(ctx, fields, *c, v[2], "grDrawTriangle")) {
+  constexpr float kMax = glide_shim::kMaxScreenCoordinate;
+  if (!glide_shim::vertex_is_valid(ctx, fields, *a, "grDrawTriangle", kMax) ||
+      !glide_shim::vertex_is_valid(ctx, fields, *b, "grDrawTriangle", kMax) ||
+      !glide_shim::vertex_is_valid(ctx, fields, *c, "grDrawTriangle", kMax)) {
     return;
   }
-  glide_shim::queue_triangle(ctx, v[0], v[1], v[2]);
+  // Checked (and any error callback run) before the queue grows: the vertices go straight in.
+  glide_shim::ShimVertex *v = ctx.renderer->queue_space(glide_shim::Primitive::Triangles, 3);
+  glide_shim::convert_vertex(fields, *a, v[0]);
+  glide_shim::convert_vertex(fields, *b, v[1]);
+  glide_shim::convert_vertex(fields, *c, v[2]);
+  if (!glide_shim::keeps_triangle(ctx, v[0], v[1], v[2])) ctx.renderer->unqueue(3);
 }
 
 void grDrawLine(const GrVertex *v1, const GrVertex *v2) {

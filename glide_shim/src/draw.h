@@ -9,9 +9,18 @@
 
 namespace glide_shim {
 
-struct VertexFields {  // which GrVertex fields the current state reads
+// How a vertex's GL depth is formed: none (depth buffering off: 0), the W-buffer's 1/w with
+// no bias (clamped to 0..1), or vertex_depth's general case (a Z-buffer, a biased W-buffer).
+enum class DepthSource { None, UnbiasedW, General };
+
+struct VertexFields {  // which GrVertex fields the current state reads, and how it reads them
   bool rgb, alpha, ooz, oow, texture;
   GrFogMode_t fog;  // the fog source: table fog reads oow, iterated-Z fog ooz, iterated alpha a
+  bool delta0;      // the RGB iterators hold delta0_rgb (guColorCombineFunction's *_DELTA0)
+  float delta0_rgb[3];
+  bool q_from_tmu;  // GR_STWHINT_W_DIFF_TMU0: the texture divisor is tmuvtx[0].oow, not oow
+  DepthSource depth_source;
+  const DepthState *depth;  // the context's, for DepthSource::General
 };
 
 VertexFields fields_read(const GlideContext &context);
@@ -31,7 +40,15 @@ bool check_polygon_count(GlideContext &context, const char *function, int nverts
 bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
                     ShimVertex &out, const char *function,
                     float max_coordinate = kMaxScreenCoordinate);
+// to_shim_vertex's two halves: the checks (reporting), then the conversion of a checked vertex.
+bool check_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
+                  const char *function, float max_coordinate = kMaxScreenCoordinate);
+void write_vertex(const VertexFields &fields, const GrVertex &in, ShimVertex &out);
 
+// False for a triangle that is not drawn: zero signed area of the snapped vertices, or culled.
+// Counts it for grSstPerfStats.
+bool keeps_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
+                    const ShimVertex &c);
 // Culls by the signed area of the snapped vertices (zero area is always dropped) and queues.
 void queue_triangle(GlideContext &context, const ShimVertex &a, const ShimVertex &b,
                     const ShimVertex &c);

@@ -124,7 +124,7 @@ void GlRenderer::queue(Primitive primitive, const ShimVertex *vertices, int coun
     flush();
     primitive_ = primitive;
   }
-  queue_.insert(queue_.end(), vertices, vertices + count);
+  queue_.append(vertices, static_cast<std::size_t>(count));
 }
 
 // Binds `program` and sets every uniform it reads from the context's state.

@@ -11,9 +11,11 @@
 #include "gl/texture_cache.h"
 
 #include <cstdint>
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glide_shim {
@@ -32,6 +34,36 @@ struct ShimVertex {
 
 enum class Primitive { Triangles, Lines, Points };
 
+// The vertices waiting to be drawn: a vector that grows without zeroing what it adds, so a
+// triangle can be written straight into it.
+class VertexQueue {
+ public:
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  const ShimVertex *data() const { return storage_.get(); }
+  void clear() { size_ = 0; }
+  ShimVertex *grow(std::size_t count) {  // `count` more vertices at the end, uninitialised
+    if (size_ + count > capacity_) reserve(std::max(2 * capacity_, size_ + count));
+    ShimVertex *added = storage_.get() + size_;
+    size_ += count;
+    return added;
+  }
+  void shrink(std::size_t count) { size_ -= count; }
+  void append(const ShimVertex *vertices, std::size_t count) {
+    std::copy(vertices, vertices + count, grow(count));
+  }
+
+ private:
+  void reserve(std::size_t capacity) {
+    std::unique_ptr<ShimVertex[]> storage(new ShimVertex[capacity]);
+    std::copy(storage_.get(), storage_.get() + size_, storage.get());
+    storage_ = std::move(storage);
+    capacity_ = capacity;
+  }
+  std::unique_ptr<ShimVertex[]> storage_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
 class GlRenderer {
  public:
   // Makes the backend's context, the frame buffer and the vertex shader; null on failure.
@@ -44,6 +76,17 @@ class GlRenderer {
   const GlFunctions &gl() const { return backend_->gl; }
 
   void queue(Primitive primitive, const ShimVertex *vertices, int count);
+  // Room for `count` vertices of `primitive` at the end of the queue (drawing the queue first if
+  // it holds another primitive), uninitialised, for the caller to write in place; unqueue(count)
+  // takes the last `count` back (a vertex that failed its checks, a culled triangle).
+  ShimVertex *queue_space(Primitive primitive, int count) {
+    if (primitive != primitive_) {
+      flush();
+      primitive_ = primitive;
+    }
+    return queue_.grow(static_cast<std::size_t>(count));
+  }
+  void unqueue(int count) { queue_.shrink(static_cast<std::size_t>(count)); }
   void flush();  // draws the queue with the context's current state
 
   // Fills the clip window of the current render buffer; colour and depth each optional.
@@ -112,7 +155,7 @@ class GlRenderer {
   unsigned depth_buffer_ = 0;
   int front_ = 0;  // the attachment scanned out; the other one is the back buffer
   Primitive primitive_ = Primitive::Triangles;
-  std::vector<ShimVertex> queue_;
+  VertexQueue queue_;
   std::map<std::string, ShaderProgram> programs_;
   std::map<std::string, int> states_seen_;  // fast keys drawn so far without their program
   TextureCache textures_;

@@ -45,12 +45,14 @@ std::string filter_code(bool bilinear, const char *address_s, const char *addres
       << "(base.x + 1.0, level.y);\n"
       << "    float j0 = " << address_t << "(base.y, level.z), j1 = " << address_t
       << "(base.y + 1.0, level.z);\n"
-      << "    // Sum of the four integer products, recovered exactly by one rounding (the float\n"
-         "    // error of k/255 * 255 summed over the taps stays far below 0.5), then >> 8.\n"
-         "    vec4 sum = (fetch(i0, j0, level) * (16.0 - f.x) * (16.0 - f.y) + fetch(i1, j0,"
-         " level) * f.x * (16.0 - f.y) + fetch(i0, j1, level) * (16.0 - f.x) * f.y +"
-         " fetch(i1, j1, level) * f.x * f.y) * 255.0;\n"
-         "    return floor(floor(sum + 0.5) / 256.0);\n";
+      << "    // Sum of the four integer products k * w, each tap's k/255 times its integer weight\n"
+         "    // w * 255: the float error summed over the taps stays below 0.05, so adding one\n"
+         "    // half and flooring the quotient by 256 gives (sum k * w) >> 8 exactly.\n"
+         "    vec2 g = 16.0 - f;\n"
+         "    vec4 sum = fetch(i0, j0, level) * (g.x * g.y * 255.0) + fetch(i1, j0, level) *"
+         " (f.x * g.y * 255.0) + fetch(i0, j1, level) * (g.x * f.y * 255.0) + fetch(i1, j1,"
+         " level) * (f.x * f.y * 255.0);\n"
+         "    return floor((sum + 0.5) / 256.0);\n";
   } else {
     s << "    return floor(fetch(" << address_s << "(floor(uv.x), level.y), " << address_t
       << "(floor(uv.y), level.z), level) * 255.0 + 0.5);\n";
