@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace gs {
@@ -21,26 +22,65 @@ struct EdgeSample {
   float w;  // light-view depth, metres
 };
 
+// A receiver vertex in the light's view; ndc and inverse_w are valid when w > 0.
+struct LayerVertex {
+  glm::vec2 ndc;
+  float w;          // light clip w: metres along the light's axis
+  float inverse_w;  // 1 / w: linear in NDC
+};
+
 struct LayerTriangle {
-  glm::vec2 a, b, c;           // NDC
+  glm::vec2 a;                 // NDC
+  glm::vec2 to_b, to_c;        // b - a, c - a, NDC
+  float area;                  // twice the signed NDC area, never near 0 (those are dropped)
+  glm::vec2 low, high;         // NDC bounding box
   glm::vec3 inverse_w;         // 1 / w at a, b, c: linear in NDC
   bool faces_light = false;
   bool shaded = false;         // step 3 may shade it with the caster's shadow
+};
+
+// Triangle indices per cell of the light's screen (kLayerGrid a side), in increasing order,
+// each cell's run at items[start[cell]] up to items[start[cell + 1]].
+struct LayerGrid {
+  std::vector<std::size_t> start, items;
 };
 
 int layer_cell_of(float ndc) {
   return std::clamp(static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kLayerGrid)), 0, kLayerGrid - 1);
 }
 
-// Barycentric weights of p in the NDC triangle; false when outside (or degenerate).
-bool layer_weights(const LayerTriangle &t, const glm::vec2 &p, glm::vec3 &l) {
-  const glm::vec2 e0 = t.b - t.a, e1 = t.c - t.a, d = p - t.a;
-  const float area = e0.x * e1.y - e0.y * e1.x;
-  if (std::abs(area) < 1e-12f) return false;
-  const float u = (d.x * e1.y - d.y * e1.x) / area, v = (e0.x * d.y - e0.y * d.x) / area;
+// Barycentric weights of p in the NDC triangle; false when outside.
+inline bool layer_weights(const LayerTriangle &t, const glm::vec2 &p, glm::vec3 &l) {
+  const glm::vec2 &e0 = t.to_b, &e1 = t.to_c;
+  const glm::vec2 d = p - t.a;
+  const float u = (d.x * e1.y - d.y * e1.x) / t.area, v = (e0.x * d.y - e0.y * d.x) / t.area;
   if (u < 0.0f || v < 0.0f || u + v > 1.0f) return false;
   l = {1.0f - u - v, u, v};
   return true;
+}
+
+// Buckets `list` by the cells its NDC boxes, clipped to the samples' box, touch.
+void bucket_layer_triangles(const std::vector<LayerTriangle> &list, const glm::vec2 &sample_low,
+                            const glm::vec2 &sample_high, LayerGrid &grid) {
+  constexpr std::size_t kCellCount = kLayerGrid * kLayerGrid;
+  grid.start.assign(kCellCount + 1, 0);
+  auto for_each_cell = [&](const LayerTriangle &lt, auto &&visit) {
+    const glm::vec2 t_low = glm::max(lt.low, sample_low), t_high = glm::min(lt.high, sample_high);
+    for (int y = layer_cell_of(t_low.y); y <= layer_cell_of(t_high.y); ++y) {
+      for (int x = layer_cell_of(t_low.x); x <= layer_cell_of(t_high.x); ++x) {
+        visit(static_cast<std::size_t>(y * kLayerGrid + x));
+      }
+    }
+  };
+  for (const LayerTriangle &lt : list) {
+    for_each_cell(lt, [&](std::size_t cell) { ++grid.start[cell + 1]; });
+  }
+  for (std::size_t cell = 0; cell < kCellCount; ++cell) grid.start[cell + 1] += grid.start[cell];
+  grid.items.resize(grid.start.back());
+  std::vector<std::size_t> next(grid.start.begin(), grid.start.end() - 1);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    for_each_cell(list[i], [&](std::size_t cell) { grid.items[next[cell]++] = i; });
+  }
 }
 
 }  // namespace
@@ -75,18 +115,22 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     sample_high = glm::max(sample_high, samples.back().ndc);
   };
   for (const glm::vec4 &p : clip) add_sample(p);
-  std::vector<std::pair<unsigned, unsigned>> edges;
+  // Each edge once, as (lower vertex << 32 | higher vertex): sorted as the vertex pairs would be.
+  std::vector<std::uint64_t> edges;
   edges.reserve(mesh.triangles.size() * 3);
+  auto edge_key = [](unsigned a, unsigned b) {
+    return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+  };
   for (const glm::uvec3 &t : mesh.triangles) {
-    edges.push_back(std::minmax(t.x, t.y));
-    edges.push_back(std::minmax(t.y, t.z));
-    edges.push_back(std::minmax(t.z, t.x));
+    edges.push_back(edge_key(t.x, t.y));
+    edges.push_back(edge_key(t.y, t.z));
+    edges.push_back(edge_key(t.z, t.x));
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   const float texels_per_ndc = 0.5f * static_cast<float>(view.size);
-  for (const auto &edge : edges) {
-    const glm::vec4 &p = clip[edge.first], &q = clip[edge.second];
+  for (const std::uint64_t edge : edges) {
+    const glm::vec4 &p = clip[edge >> 32], &q = clip[edge & 0xffffffffu];
     if (!(p.w > 0.0f && q.w > 0.0f)) continue;
     const float texels = glm::length(glm::vec2(p) / p.w - glm::vec2(q) / q.w) * texels_per_ndc;
     const int steps =
@@ -121,23 +165,13 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   const float texel = 2.0f / static_cast<float>(view.size);  // NDC, bilinear reach
 
   std::vector<LayerTriangle> triangles, behind;
-  std::vector<glm::vec4> receiver_clip;
-  std::vector<std::vector<std::size_t>> grid(kLayerGrid * kLayerGrid);
-  auto bucket = [&](const std::vector<LayerTriangle> &list) {
-    for (std::vector<std::size_t> &cell : grid) cell.clear();
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const LayerTriangle &lt = list[i];
-      const glm::vec2 t_low = glm::max(glm::min(lt.a, glm::min(lt.b, lt.c)), sample_low);
-      const glm::vec2 t_high = glm::min(glm::max(lt.a, glm::max(lt.b, lt.c)), sample_high);
-      for (int y = layer_cell_of(t_low.y); y <= layer_cell_of(t_high.y); ++y) {
-        for (int x = layer_cell_of(t_low.x); x <= layer_cell_of(t_high.x); ++x) {
-          grid[static_cast<std::size_t>(y * kLayerGrid + x)].push_back(i);
-        }
-      }
-    }
-  };
-  auto cell_at = [&](const glm::vec2 &ndc) -> const std::vector<std::size_t> & {
-    return grid[static_cast<std::size_t>(layer_cell_of(ndc.y) * kLayerGrid + layer_cell_of(ndc.x))];
+  std::vector<LayerVertex> receiver_view;
+  LayerGrid grid;
+  auto cell_at = [&](const glm::vec2 &ndc) {
+    const std::size_t cell =
+        static_cast<std::size_t>(layer_cell_of(ndc.y) * kLayerGrid + layer_cell_of(ndc.x));
+    return std::make_pair(grid.items.data() + grid.start[cell],
+                          grid.items.data() + grid.start[cell + 1]);
   };
   std::vector<const EdgeSample *> unresolved;  // outside and hidden, nothing lit behind found yet
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
@@ -148,52 +182,64 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     if (known != pierced.end() && known->planar) continue;  // clipped to its plane already
     triangles.clear();
     behind.clear();
-    receiver_clip.resize(receiver.world.size());
-    for (std::size_t i = 0; i < receiver_clip.size(); ++i) {
-      receiver_clip[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
+    // Each vertex's light clip position, and its NDC once for all the triangles sharing it.
+    receiver_view.resize(receiver.world.size());
+    for (std::size_t i = 0; i < receiver_view.size(); ++i) {
+      const glm::vec4 c = light_clip * glm::vec4(receiver.world[i], 1.0f);
+      LayerVertex &v = receiver_view[i];
+      v.w = c.w;
+      if (c.w > 0.0f) v.ndc = glm::vec2(c) / c.w, v.inverse_w = 1.0f / c.w;
     }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-      const glm::vec4 &ca = receiver_clip[t.x], &cb = receiver_clip[t.y], &cc = receiver_clip[t.z];
-      if (ca.w <= 0.0f || cb.w <= 0.0f || cc.w <= 0.0f) continue;  // reaches behind the light
-      LayerTriangle lt{glm::vec2(ca) / ca.w, glm::vec2(cb) / cb.w, glm::vec2(cc) / cc.w,
-                       {1.0f / ca.w, 1.0f / cb.w, 1.0f / cc.w},
-                       glm::dot(glm::cross(b - a, c - a), view.position - a) > 0.0f};
-      const glm::vec2 t_low = glm::min(lt.a, glm::min(lt.b, lt.c));
-      const glm::vec2 t_high = glm::max(lt.a, glm::max(lt.b, lt.c));
+      const LayerVertex &va = receiver_view[t.x], &vb = receiver_view[t.y], &vc = receiver_view[t.z];
+      if (va.w <= 0.0f || vb.w <= 0.0f || vc.w <= 0.0f) continue;  // reaches behind the light
+      const glm::vec2 t_low = glm::min(va.ndc, glm::min(vb.ndc, vc.ndc));
+      const glm::vec2 t_high = glm::max(va.ndc, glm::max(vb.ndc, vc.ndc));
       if (glm::any(glm::lessThan(t_high, sample_low)) || glm::any(glm::lessThan(sample_high, t_low)))
         continue;
+      LayerTriangle lt;
+      lt.a = va.ndc, lt.to_b = vb.ndc - va.ndc, lt.to_c = vc.ndc - va.ndc;
+      lt.area = lt.to_b.x * lt.to_c.y - lt.to_b.y * lt.to_c.x;
+      if (std::abs(lt.area) < 1e-12f) continue;  // no sample lies inside it
+      lt.low = t_low, lt.high = t_high;
+      lt.inverse_w = {va.inverse_w, vb.inverse_w, vc.inverse_w};
+      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+      lt.faces_light = glm::dot(glm::cross(b - a, c - a), view.position - a) > 0.0f;
       // Wholly behind every sample: it can only be a lit layer behind one (looked at below, if
       // some sample needs it).
-      if (std::min(ca.w, std::min(cb.w, cc.w)) > farthest_sample + tolerance) {
+      if (std::min(va.w, std::min(vb.w, vc.w)) > farthest_sample + tolerance) {
         if (lt.faces_light) behind.push_back(lt);
         continue;
       }
-      const float farthest = std::max(ca.w, std::max(cb.w, cc.w));
+      const float farthest = std::max(va.w, std::max(vb.w, vc.w));
       for (int y = shade_cell(t_low.y - texel); y <= shade_cell(t_high.y + texel) && !lt.shaded; ++y) {
         for (int x = shade_cell(t_low.x - texel); x <= shade_cell(t_high.x + texel); ++x) {
-          if (farthest > cell_nearest[static_cast<std::size_t>(y * kCells + x)]) lt.shaded = true;
+          if (farthest > cell_nearest[static_cast<std::size_t>(y * kCells + x)]) {
+            lt.shaded = true;
+            break;
+          }
         }
       }
       triangles.push_back(lt);
     }
     if (triangles.empty()) continue;
-    bucket(triangles);
+    bucket_layer_triangles(triangles, sample_low, sample_high, grid);
     bool hides = false, between = false;
     unresolved.clear();
     for (const EdgeSample &s : samples) {
       float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
       bool front_faces_light = false, hidden = false, lit_behind = false;
-      for (std::size_t i : cell_at(s.ndc)) {
+      const auto [first, last] = cell_at(s.ndc);
+      for (const std::size_t *i = first; i != last; ++i) {
+        const LayerTriangle &lt = triangles[*i];
         glm::vec3 l;
-        if (!layer_weights(triangles[i], s.ndc, l)) continue;
-        const float w = 1.0f / glm::dot(l, triangles[i].inverse_w);
+        if (!layer_weights(lt, s.ndc, l)) continue;
+        const float w = 1.0f / glm::dot(l, lt.inverse_w);
         if (w < s.w - tolerance) {
-          if (w > nearest_front) nearest_front = w, front_faces_light = triangles[i].faces_light;
-          hidden = hidden || (triangles[i].faces_light && triangles[i].shaded &&
-                              w >= view.caster_front);
+          if (w > nearest_front) nearest_front = w, front_faces_light = lt.faces_light;
+          hidden = hidden || (lt.faces_light && lt.shaded && w >= view.caster_front);
         } else if (w > s.w + tolerance) {
-          lit_behind = lit_behind || triangles[i].faces_light;
+          lit_behind = lit_behind || lt.faces_light;
         }
       }
       // Only a sample outside the receiver (the surface just in front of it faces away from the
@@ -206,11 +252,12 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       if (outside) unresolved.push_back(&s);
     }
     if (!between && !unresolved.empty() && !behind.empty()) {
-      bucket(behind);
+      bucket_layer_triangles(behind, sample_low, sample_high, grid);
       for (const EdgeSample *s : unresolved) {
-        for (std::size_t i : cell_at(s->ndc)) {
+        const auto [first, last] = cell_at(s->ndc);
+        for (const std::size_t *i = first; i != last && !between; ++i) {
           glm::vec3 l;
-          if (layer_weights(behind[i], s->ndc, l)) between = true;
+          if (layer_weights(behind[*i], s->ndc, l)) between = true;
         }
         if (between) break;
       }
