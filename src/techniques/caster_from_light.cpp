@@ -84,6 +84,21 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
 
 }  // namespace
 
+bool LightView::covered_near(const glm::vec2 &low, const glm::vec2 &high, float reach) const {
+  if (!(low.x <= high.x) || !(low.y <= high.y)) return true;  // not finite
+  const float cell = static_cast<float>(size) / kFineCells;  // texels
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - reach) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - reach) / cell)));
+  const int x1 = std::min(kFineCells - 1, static_cast<int>(std::floor((high.x + reach) / cell)));
+  const int y1 = std::min(kFineCells - 1, static_cast<int>(std::floor((high.y + reach) / cell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (covered[static_cast<std::size_t>(y * kFineCells + x)]) return true;
+    }
+  }
+  return false;
+}
+
 // Step 1's CPU part: the direct-path note, the caster's light-screen triangles and the cells
 // they cover (LightView::occupied, covered, silhouette).
 CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
@@ -124,9 +139,7 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   auto cell_index = [&](float texels) {
     return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
   };
-  auto fine_index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
-  };
+  auto fine_index = [&](float texels) { return view.fine_cell_of(texels); };
   // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.
   auto occupy = [&](const GrVertex *const *corners, std::size_t count, float nearest) {
     float x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
@@ -239,10 +252,7 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
     draw.vertices[i].oow = depth_oow(view, draw.light_w[i]);
   }
   const Mesh &mesh = caster_mesh(scene.objects[caster]);
-  const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
-  auto fine_index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / fine_cell)), 0, LightView::kFineCells - 1);
-  };
+  auto fine_index = [&](float texels) { return view.fine_cell_of(texels); };
   // The caster's cut by the receiver's surface runs through its triangles that pass through
   // it: the fine cells of their bounding boxes join the silhouette.
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {

@@ -98,25 +98,6 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   return grid;
 }
 
-// Whether a fine cell the caster covers (LightView::covered: its triangles' bounding boxes)
-// lies within a texel of the box low..high (the light's screen, texels). Only where the caster
-// draws does step 1 test depth, and a pixel both cover has its centre within 1/16 texel (the
-// shim's snapping) of both boxes, so a surface triangle whose box is farther from every covered
-// cell writes no depth the caster is tested against: leaving it out changes no texel.
-bool near_covered_cell(const LightView &view, const glm::vec2 &low, const glm::vec2 &high) {
-  if (!(low.x <= high.x) || !(low.y <= high.y)) return true;  // not finite: drawn as it is
-  const float cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
-  auto index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kFineCells - 1);
-  };
-  for (int y = index(low.y - 1.0f); y <= index(high.y + 1.0f); ++y) {
-    for (int x = index(low.x - 1.0f); x <= index(high.x + 1.0f); ++x) {
-      if (view.covered[static_cast<std::size_t>(y * LightView::kFineCells + x)]) return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec3> &caster_world,
@@ -217,7 +198,10 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
       fan.push_back(screen);
       low = glm::min(low, glm::vec2(screen.x, screen.y)), high = glm::max(high, glm::vec2(screen.x, screen.y));
     }
-    if (!near_covered_cell(view, low, high)) continue;
+    // Only where the caster draws does step 1 test depth, and a pixel both cover has its centre
+    // within 1/16 texel (the shim's snapping) of both boxes: a surface triangle farther than a
+    // texel from every covered cell writes no depth the caster is tested against.
+    if (!view.covered_near(low, high, 1.0f)) continue;
     draw_fan(fan);
   }
   grColorMask(FXTRUE, FXFALSE);

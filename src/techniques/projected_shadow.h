@@ -12,6 +12,7 @@
 
 #include <glide.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -82,6 +83,14 @@ struct LightView {
   // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
   static constexpr int kFineCells = 128;
   std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
+  // The fine cell (column or row) holding a light-screen coordinate in texels, clamped to the grid.
+  int fine_cell_of(float texels) const {
+    const float side = static_cast<float>(size) / kFineCells;  // texels
+    return std::clamp(static_cast<int>(std::floor(texels / side)), 0, kFineCells - 1);
+  }
+  // Whether a covered fine cell lies within `reach` texels of the box low..high (light screen,
+  // texels); true for a box that is not finite, which the callers then keep as it is.
+  bool covered_near(const glm::vec2 &low, const glm::vec2 &high, float reach) const;
   // The fine cells the caster's silhouette from the light crosses (and its cut by edge_planes):
   // where the shadow's edge can lie (texel_footprint.h).
   std::vector<bool> silhouette = std::vector<bool>(kFineCells * kFineCells, false);

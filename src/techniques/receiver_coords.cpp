@@ -23,6 +23,19 @@ glm::vec3 shadow_stq(const glm::mat4 &light_clip, const glm::vec3 &world) {
           clip.w};
 }
 
+// The box (light screen, texels) a receiver polygon spans, given by its light clip coordinates
+// (all with w > 0): its projection is convex, so its corners bound it.
+void texel_box(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
+               glm::vec2 &low, glm::vec2 &high) {
+  low = glm::vec2(INFINITY), high = glm::vec2(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+}
+
 // Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
 // the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
 // its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
@@ -59,26 +72,9 @@ bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t
 // bytes; a spare cell only costs its drawing).
 bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
   constexpr float kReachTexels = 1.5f;
-  glm::vec2 low(INFINITY), high(-INFINITY);
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
-                          0.5f) * static_cast<float>(view.size);  // texels
-    low = glm::min(low, uv);
-    high = glm::max(high, uv);
-  }
-  const float cell = static_cast<float>(view.size) / LightView::kFineCells;
-  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - kReachTexels) / cell)));
-  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - kReachTexels) / cell)));
-  const int x1 = std::min(LightView::kFineCells - 1,
-                          static_cast<int>(std::floor((high.x + kReachTexels) / cell)));
-  const int y1 = std::min(LightView::kFineCells - 1,
-                          static_cast<int>(std::floor((high.y + kReachTexels) / cell)));
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      if (view.covered[static_cast<std::size_t>(y * LightView::kFineCells + x)]) return true;
-    }
-  }
-  return false;
+  glm::vec2 low, high;
+  texel_box(view, light_clip, count, low, high);
+  return view.covered_near(low, high, kReachTexels);
 }
 
 float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
@@ -161,17 +157,9 @@ bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm
                     std::size_t count, const glm::mat4 &world_to_light_clip,
                     std::vector<glm::vec4> &planes) {
   constexpr float kReachTexels = 1.5f;
-  glm::vec2 low(INFINITY), high(-INFINITY);
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
-                          0.5f) * static_cast<float>(view.size);  // texels
-    low = glm::min(low, uv);
-    high = glm::max(high, uv);
-  }
-  const float cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
-  auto index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kFineCells - 1);
-  };
+  glm::vec2 low, high;
+  texel_box(view, light_clip, count, low, high);
+  auto index = [&](float texels) { return view.fine_cell_of(texels); };
   int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
   const int box_x0 = index(low.x - kReachTexels), box_x1 = index(high.x + kReachTexels);
   for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
