@@ -1,12 +1,14 @@
 // Programs may open and close the window many times in one run: 200 grSstWinOpen / draw /
-// grSstWinClose cycles leave the process's resident memory flat (after a warm-up, within a
-// margin far below what one leaked window would cost: two 565 buffers, depth and 2 MB of TMU).
+// grSstWinClose cycles leave the heap's allocated bytes flat (after a warm-up, within a margin far
+// below what one leaked window would cost: two 565 buffers, depth and 2 MB of TMU), and the
+// resident size within what the allocator's free space can account for.
 #include <glide.h>
 #include <glide_shim.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstring>
+#include <malloc.h>
 #include <unistd.h>
 
 // GCC says it builds with AddressSanitizer by __SANITIZE_ADDRESS__, clang 14 by __has_feature.
@@ -35,6 +37,13 @@ long resident_kib() {
   return read == 2 ? pages_resident * (sysconf(_SC_PAGESIZE) / 1024) : -1;
 }
 
+// Bytes the C heap has handed out and not taken back, in every arena and in blocks it mapped
+// alone; freed space the allocator keeps does not count.
+long allocated_kib() {
+  const struct mallinfo2 heap = mallinfo2();
+  return static_cast<long>((heap.uordblks + heap.hblkhd) / 1024);
+}
+
 // One open / clear / (draw) / swap / read / close cycle; drawing compiles the shim's shaders for
 // the new context, so only every tenth cycle draws, to keep the test short.
 void cycle(bool draw) {
@@ -60,12 +69,14 @@ TEST(WindowCycles, TwoHundredOpenCloseCyclesDoNotGrowMemory) {
   grGlideInit();
   for (int i = 0; i < 20; ++i) cycle(i % 10 == 0);  // warm-up: allocator pools and the driver's caches
   const long before = resident_kib();
+  const long allocated_before = allocated_kib();
   ASSERT_GT(before, 0);
   for (int i = 0; i < 200; ++i) {
     cycle(i % 10 == 0);
     if (::testing::Test::HasFatalFailure()) break;
   }
   const long after = resident_kib();
+  const long allocated_after = allocated_kib();
   grGlideShutdown();
   // One leaked 640x480 window is over 3 MB (buffers and TMU memory); 200 would be 600 MB.
 #if defined(WINDOW_CYCLES_UNDER_ASAN)
@@ -73,9 +84,17 @@ TEST(WindowCycles, TwoHundredOpenCloseCyclesDoNotGrowMemory) {
   // its shadow memory grows with them); LeakSanitizer checks instead that the cycles left no
   // block unreachable. The plain build checks the resident size.
   EXPECT_EQ(__lsan_do_recoverable_leak_check(), 0) << "LeakSanitizer found leaked blocks";
-  (void)before, (void)after;
+  (void)before, (void)after, (void)allocated_before, (void)allocated_after;
 #else
-  EXPECT_LT(after - before, 4 * 1024) << "resident " << before << " KiB -> " << after << " KiB";
+  // Measured at 29d5155 over 200 cycles: 0.1 MB more allocated, 0.4 to 2.7 MB more resident.
+  // The allocated bytes level off (0.27 MB over 700 cycles, most of it in the first 100); the
+  // resident size rises in steps of about 1 MB when a freed window's buffers leave holes the
+  // next window's do not fit, more often when threads are scheduled differently under load. So
+  // the tight bound is on allocated bytes (5 KB a cycle), and the resident bound only has to
+  // tell steps from a leak the allocator cannot see (a mapping: 80 KB a cycle).
+  EXPECT_LT(allocated_after - allocated_before, 1024)
+      << "allocated " << allocated_before << " KiB -> " << allocated_after << " KiB";
+  EXPECT_LT(after - before, 16 * 1024) << "resident " << before << " KiB -> " << after << " KiB";
 #endif
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
 }
