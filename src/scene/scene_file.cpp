@@ -311,7 +311,7 @@ SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
   }
   const glm::vec3 rotation =
       f.has("rotation_degrees") ? position(f["rotation_degrees"]) : glm::vec3(0.0f);
-  const glm::vec3 translation = f.has("position") ? world_point(f["position"]) : glm::vec3(0.0f);
+  const glm::vec3 translation = f.has("position") ? position(f["position"]) : glm::vec3(0.0f);
   object.model_to_world = model_to_world(scale, rotation, translation);
   if (f.has("casts_shadow")) object.casts_shadow = boolean(f["casts_shadow"]);
   if (f.has("receives_shadow")) object.receives_shadow = boolean(f["receives_shadow"]);
