@@ -1,6 +1,7 @@
 // Step 1's camera: the light's view fitted to one caster (the article's bounding-sphere view, or
-// the caster clipped to the light's beam), split into 256x256 tiles above a Voodoo 1 texture, and
-// the texture size picked from the caster's size on screen. Spaces: world in; light view (the
+// the caster clipped to the light's beam; a closed caster around the light drawn from both sides,
+// or refused when a receiver reaches inside it), split into 256x256 tiles above a Voodoo 1
+// texture, and the texture size picked from the caster's size on screen. Spaces: world in; light view (the
 // light at the origin looking down -z) and light clip (GL convention) out, as LightView's
 // matrices and caster planes (light view space).
 #include "techniques/projected_shadow.h"
