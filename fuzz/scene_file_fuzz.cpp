@@ -1,10 +1,12 @@
 // scene_file_fuzz: the input's bytes as a scene file for load_scene. The scene's directory also
 // holds tetrahedron.obj, so OBJ meshes named by the seed scenes load. Either the load fails with
 // a message naming the file and leaves the scene alone, or the scene keeps the documented limits
-// (docs/scene_format.md): screen sides, lights, triangles, and indices in range.
+// (docs/scene_format.md): screen sides, lights, triangles, indices in range, and every point of
+// the world within 1e7 m of the origin.
 #include "fuzz_files.h"
 #include "scene/scene.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,6 +29,13 @@ void check_mesh(const gs::Mesh &mesh) {
     for (int k = 0; k < 3; ++k)
       if (triangle[k] >= vertices) violated("a triangle index is out of range");
   }
+}
+
+// Finite and within the scene's world extent (scene_json.h's kMaxWorldCoordinate), world space.
+bool within_world(const glm::vec3 &p) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(p[k]) <= 1e7f)) return false;
+  return true;
 }
 
 }  // namespace
@@ -57,10 +66,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     check_mesh(object.mesh);
     check_mesh(object.shadow_mesh);
     triangles += object.mesh.triangle_count() + object.shadow_mesh.triangle_count();
+    for (const glm::vec3 &model : object.mesh.positions) {
+      if (!within_world(glm::vec3(object.model_to_world * glm::vec4(model, 1.0f))))
+        violated("a vertex beyond 1e7 m or not finite was accepted");
+    }
   }
+  if (!within_world(scene.camera.position) || !within_world(scene.camera.target))
+    violated("a camera beyond 1e7 m was accepted");
   if (triangles > 2'000'000) violated("more than 2,000,000 triangles were accepted");
   for (const gs::SpotLight &light : scene.lights) {
     if (light.shadow_size < 32 || light.shadow_size > 512) violated("a shadow size is out of range");
+    if (!within_world(light.position) || !within_world(light.target))
+      violated("a light beyond 1e7 m was accepted");
   }
   return 0;
 }

@@ -2,6 +2,7 @@
 // scene files, as a table, and optionally a CSV, a plot with the Pareto front and the cheapest
 // configuration within an error budget.
 #include "cli/commands.h"
+#include "cli/options.h"
 #include "measure/plot.h"
 #include "measure/speed_error.h"
 #include "scene/fight_scene.h"
@@ -167,6 +168,7 @@ Command add_bench_command(CLI::App &app) {
   bench->add_option("--csv", o->csv, "write one row per frame and configuration");
   bench->add_option("--plot", o->plot, "write error against time as a PNG with the Pareto front");
   bench->add_option("--budget", o->budget, "name the cheapest configuration with at most this error (fraction)")
+      ->check(finite_number())
       ->check(CLI::Range(0.0, 1.0));
   return {bench, [o] { return run_bench_command(o->scenes, o->quick, o->repeats, o->csv, o->plot, o->budget); }};
 }

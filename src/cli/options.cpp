@@ -5,9 +5,20 @@
 #include <glide_shim.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace gs::cli {
+
+CLI::Validator finite_number() {
+  return CLI::Validator(
+      [](std::string &input) {
+        const double value = std::strtod(input.c_str(), nullptr);
+        return std::isfinite(value) ? std::string() : "must be a finite number, not " + input;
+      },
+      "FINITE");
+}
 
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size) {
   command.add_option("--technique", choice.name, "shadow technique")
@@ -28,9 +39,11 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
       ->check(CLI::IsMember({"constant", "distance"}))
       ->capture_default_str();
   command.add_option("--bias-slope", choice.bias_slope, "depth-map: glPolygonOffset factor")
+      ->check(finite_number())
       ->check(CLI::Range(0.0f, 100.0f))
       ->capture_default_str();
   command.add_option("--bias-units", choice.bias_units, "depth-map: glPolygonOffset units")
+      ->check(finite_number())
       ->check(CLI::Range(0.0f, 10000.0f))
       ->capture_default_str();
   command.add_flag("--nearest", choice.nearest,

@@ -20,6 +20,10 @@ struct TechniqueChoice {
   std::string volume = "auto";                // stencil-volume mode
 };
 
+// A check for a number option that refuses "nan" and "inf", to run before CLI::Range (which
+// lets NaN through: every comparison with it is false).
+CLI::Validator finite_number();
+
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size);
 TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_size);
 

@@ -197,13 +197,22 @@ struct Caster {
   std::vector<ProjectedImage> slides;  // per light: its slide, empty unless a projector
 };
 
-// Whether `light` reaches the surface point, and if blocked, whether another object blocks it.
-// Only casters block; a surface that receives no shadow is lit wherever the light reaches it.
+// Whether a face turns towards the light, decided per face as the techniques decide it (edge-on
+// is away): against one of its corners, not the hit point, whose rounding off the plane would
+// make a light lying in the face's plane light a random scatter of its pixels.
+bool faces_light(const glm::dvec3 &face, const glm::dvec3 &corner, const glm::dvec3 &light) {
+  return glm::dot(face, light - corner) > 0.0;
+}
+
+// Whether `light` reaches the surface point (on the face through `corner`), and if blocked,
+// whether another object blocks it. Only casters block; a surface that receives no shadow is
+// lit wherever the light reaches it.
 LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3 &point,
-                       const glm::dvec3 &face, unsigned own, bool receives, bool &by_other) {
+                       const glm::dvec3 &face, const glm::dvec3 &corner, unsigned own,
+                       bool receives, bool &by_other) {
   by_other = false;
   const glm::dvec3 light_pos(light.position);
-  if (spot_factor(light, glm::vec3(point)) <= 0.0f || glm::dot(face, light_pos - point) <= 0.0)
+  if (spot_factor(light, glm::vec3(point)) <= 0.0f || !faces_light(face, corner, light_pos))
     return LightReach::Outside;
   if (!receives) return LightReach::Lit;
   const glm::dvec3 origin = point + face * c.offset;
@@ -289,14 +298,15 @@ void cast_pixel(const Caster &c, int i, int j, GroundTruth &truth) {
       // The slide's colour where the projector sees a surface facing it (Segal et al.'s pass 2,
       // which ignores occlusion); it casts no shadow, so the light's reach stays Outside.
       glm::vec2 uv;
-      if (glm::dot(face, glm::dvec3(light.position) - point) > 0.0 &&
+      if (faces_light(face, body.position[tri.x], glm::dvec3(light.position)) &&
           beam_coordinates(light, glm::vec3(point), uv))
         light_sum += light.color * sample_projected_image(c.slides[l], uv);
       continue;
     }
     bool by_other = false;
     const LightReach reach =
-        reach_light(c, light, point, face, hit.hit.geomID, body.receives, by_other);
+        reach_light(c, light, point, face, body.position[tri.x], hit.hit.geomID, body.receives,
+                    by_other);
     truth.reach[pixel * lights + l] = reach;
     if (reach == LightReach::Blocked) {
       (by_other ? by_other_any : by_self_only_any) = true;

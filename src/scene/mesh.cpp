@@ -9,6 +9,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <glm/gtc/constants.hpp>
@@ -224,6 +225,43 @@ std::size_t first_vertex_weight_line(const std::string &text) {
   return 0;
 }
 
+// The 1-based number of the first `v` or `vn` line holding a value that is not a number finite as
+// a 32-bit float ("nan", "1e39", "1,5", a word), 0 if none: tinyobjloader reads such a value as
+// 0 or infinity without a word, which would move a vertex silently. `bad` is set to the value.
+std::size_t first_bad_coordinate_line(const std::string &text, std::string &bad) {
+  std::size_t line = 1;
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::size_t at = start;
+    while (at < end && blank(text[at])) ++at;
+    const bool position = end - at >= 2 && text[at] == 'v' && blank(text[at + 1]);
+    const bool normal = end - at >= 3 && text.compare(at, 2, "vn") == 0 && blank(text[at + 2]);
+    if (position || normal) {
+      at += position ? 1 : 2;
+      const std::size_t stop = std::min(text.find('#', at), end);
+      while (at < stop) {
+        while (at < stop && blank(text[at])) ++at;
+        std::size_t token_end = at;
+        while (token_end < stop && !blank(text[token_end])) ++token_end;
+        if (token_end == at) break;
+        float value = 0.0f;
+        // from_chars takes no '+' sign, which C's strtod (and OBJ writers) allow.
+        const std::size_t digits = text[at] == '+' ? at + 1 : at;
+        const std::from_chars_result read =
+            std::from_chars(text.data() + digits, text.data() + token_end, value);
+        if (read.ec != std::errc() || read.ptr != text.data() + token_end || !std::isfinite(value)) {
+          bad = text.substr(at, std::min<std::size_t>(token_end - at, 40));
+          return line;
+        }
+        at = token_end;
+      }
+    }
+    start = end + 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
@@ -242,6 +280,13 @@ bool load_obj(const std::string &path, Mesh &mesh, std::string &error) {
   if (weights != 0) {
     error = path + ": line " + std::to_string(weights) +
             ": vertex weights ('vw' lines) are not supported";
+    return false;
+  }
+  std::string bad_value;
+  const std::size_t bad_line = first_bad_coordinate_line(text, bad_value);
+  if (bad_line != 0) {
+    error = path + ": line " + std::to_string(bad_line) + ": '" + bad_value +
+            "' is not a number finite as a 32-bit float";
     return false;
   }
   std::istringstream stream(text);

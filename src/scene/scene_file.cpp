@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
@@ -56,8 +57,8 @@ void check_aim(const Field &f, const glm::vec3 &from, const glm::vec3 &to, const
 
 void read_camera(const Field &f, Camera &camera) {
   f.require_object_with_keys({"position", "target", "up", "fov_degrees", "near", "far"});
-  camera.position = position(f["position"]);
-  camera.target = position(f["target"]);
+  camera.position = world_point(f["position"]);
+  camera.target = world_point(f["target"]);
   check_aim(f, camera.position, camera.target, "camera.position");
   if (f.has("up")) camera.up = position(f["up"]);
   // World space; a zero up, or one along the view, leaves the camera's roll undefined.
@@ -122,8 +123,8 @@ SpotLight read_light(const Field &f, const std::filesystem::path &scene_dir) {
   f.require_object_with_keys({"position", "target", "cone_degrees", "color", "shadow_strength",
                               "shadow_size", "slide", "beam", "attenuation"});
   SpotLight light;
-  light.position = position(f["position"]);
-  light.target = position(f["target"]);
+  light.position = world_point(f["position"]);
+  light.target = world_point(f["target"]);
   check_aim(f, light.position, light.target, "the light's position");
   if (f.has("cone_degrees"))
     light.cone_degrees = number(f["cone_degrees"], "a number in (0, 179]",
@@ -277,6 +278,21 @@ glm::mat4 model_to_world(const glm::vec3 &scale, const glm::vec3 &rotation_degre
   return glm::scale(m, scale);
 }
 
+// Fails at the object if a vertex of its mesh, placed in the world, is not finite (a heightfield
+// whose wavelength is too short for a float, a huge scale) or lies beyond kMaxWorldCoordinate.
+void check_world_extent(const Field &f, const SceneObject &object) {
+  for (const glm::vec3 &model : object.mesh.positions) {
+    const glm::vec3 world = glm::vec3(object.model_to_world * glm::vec4(model, 1.0f));
+    const bool finite = std::isfinite(world.x) && std::isfinite(world.y) && std::isfinite(world.z);
+    if (finite && glm::all(glm::lessThanEqual(glm::abs(world), glm::vec3(kMaxWorldCoordinate))))
+      continue;
+    char where[96];
+    std::snprintf(where, sizeof where, "(%g, %g, %g)", world.x, world.y, world.z);
+    f.fail(std::string("its mesh, placed in the world, has a vertex at ") + where +
+           (finite ? ", beyond 1e7 m from the origin (the limit)" : ", not a finite number"));
+  }
+}
+
 SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
                         TriangleBudget &budget) {
   f.require_object_with_keys({"name", "mesh", "position", "rotation_degrees", "scale", "color",
@@ -306,6 +322,7 @@ SceneObject read_object(const Field &f, const std::filesystem::path &scene_dir,
 
   object.mesh = read_mesh(f["mesh"], scene_dir, budget);
   if (recolor) object.mesh.set_color(new_color);
+  check_world_extent(f, object);
   return object;
 }
 

@@ -187,6 +187,10 @@ glm::vec3 vec3(const Field &f, const char *element, bool (*accept)(float)) {
 }
 
 glm::vec3 position(const Field &f) { return vec3(f, "a finite number", any_value); }
+glm::vec3 world_point(const Field &f) {
+  return vec3(f, "a number in [-1e7, 1e7] (metres: a scene lies within 10,000 km of the origin)",
+              [](float v) { return std::abs(v) <= kMaxWorldCoordinate; });
+}
 glm::vec3 color(const Field &f) { return vec3(f, "a number in [0, 1]", unit_interval); }
 
 }  // namespace gs::scene_json

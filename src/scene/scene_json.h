@@ -81,6 +81,11 @@ bool boolean(const Field &f);
 std::string text(const Field &f);
 glm::vec3 vec3(const Field &f, const char *element, bool (*accept)(float));
 glm::vec3 position(const Field &f);  // three finite numbers
+// The largest distance from the origin along any axis, metres, of any point of a scene: the
+// camera, the lights, every vertex in the world. A float there still resolves a metre, and the
+// renderers' products of coordinates stay far inside float range.
+constexpr float kMaxWorldCoordinate = 1e7f;
+glm::vec3 world_point(const Field &f);  // three numbers in [-kMaxWorldCoordinate, kMaxWorldCoordinate]
 glm::vec3 color(const Field &f);     // three numbers in [0, 1]
 
 }  // namespace gs::scene_json

@@ -114,8 +114,9 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   }
   CasterDraw draw;
   // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
-  // sheet) may show the light only its back, so it is drawn from both sides.
-  draw.closed = is_closed_surface(caster_mesh(object));
+  // sheet) may show the light only its back, and a closed one around the light nothing else, so
+  // those are drawn from both sides.
+  draw.closed = !view.surrounds_light && is_closed_surface(caster_mesh(object));
   const glm::mat4 to_view = view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> &screen = draw.vertices;

@@ -1,11 +1,14 @@
 // Step 1's camera: the light's view fitted to one caster (the article's bounding-sphere view, or
-// the caster clipped to the light's beam), split into 256x256 tiles above a Voodoo 1 texture, and
-// the texture size picked from the caster's size on screen. Spaces: world in; light view (the
+// the caster clipped to the light's beam; a closed caster around the light drawn from both sides,
+// or refused when a receiver reaches inside it), split into 256x256 tiles above a Voodoo 1
+// texture, and the texture size picked from the caster's size on screen. Spaces: world in; light view (the
 // light at the origin looking down -z) and light clip (GL convention) out, as LightView's
 // matrices and caster planes (light view space).
 #include "techniques/projected_shadow.h"
 
 #include "techniques/light_beam.h"
+#include "techniques/point_in_mesh.h"
+#include "techniques/stencil_volume_shadow.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -63,6 +66,43 @@ float widest_tangent(const glm::vec3 &position, const glm::vec3 &axis,
   return widest;
 }
 
+// A closed caster around the light (inside its bounding sphere first, the cheap test) blocks
+// everything the light reaches beyond it, and nothing inside it. The texture, drawn from both
+// sides, then holds the whole beam: right for receivers outside the caster, wrong for one inside.
+// Returns the name of a receiver with a triangle inside the caster's world bounding box (the
+// caster cannot serve it), "" when none has; `surrounds` says whether the caster is around the light.
+std::string receiver_inside_caster_around_light(const Scene &scene, std::size_t caster,
+                                                const glm::vec3 &light, const Sphere &bounds,
+                                                bool &surrounds) {
+  surrounds = false;
+  const SceneObject &object = scene.objects[caster];
+  if (glm::length(light - bounds.centre) > bounds.radius) return "";
+  const Mesh &mesh = caster_mesh(object);
+  if (!is_closed_surface(mesh)) return "";
+  std::vector<glm::vec3> world(mesh.positions.size());
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    world[i] = glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    low = glm::min(low, world[i]), high = glm::max(high, world[i]);
+  }
+  surrounds = mesh_surrounds(world, mesh.triangles, light);
+  if (!surrounds) return "";
+  for (std::size_t r = 0; r < scene.objects.size(); ++r) {
+    const SceneObject &receiver = scene.objects[r];
+    if (r == caster || !receiver.receives_shadow) continue;
+    std::vector<glm::vec3> corners(receiver.mesh.positions.size());
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      corners[i] = glm::vec3(receiver.model_to_world * glm::vec4(receiver.mesh.positions[i], 1.0f));
+    for (const glm::uvec3 &t : receiver.mesh.triangles) {
+      const glm::vec3 t_low = glm::min(corners[t.x], glm::min(corners[t.y], corners[t.z]));
+      const glm::vec3 t_high = glm::max(corners[t.x], glm::max(corners[t.y], corners[t.z]));
+      if (glm::all(glm::lessThanEqual(t_low, high)) && glm::all(glm::lessThanEqual(low, t_high)))
+        return receiver.name;
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light_index,
@@ -81,6 +121,14 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
     view.problem = "shadow size " + std::to_string(view.size) + " for light " +
                    std::to_string(light_index) + " is not a power of two in 32..512, so '" +
                    object.name + "' casts no shadow from it";
+    return view;
+  }
+  const std::string inside =
+      receiver_inside_caster_around_light(scene, caster, light.position, sphere, view.surrounds_light);
+  if (!inside.empty()) {
+    view.problem = names + ": the light is inside the caster and '" + inside +
+                   "' reaches inside it too; one shadow texture cannot tell what the caster "
+                   "surrounds from what lies beyond it, so it casts no shadow from this light";
     return view;
   }
   const LightBeam beam = light_beam(light);

@@ -6,6 +6,7 @@
 
 #include "scene/lighting.h"
 #include "techniques/light_beam.h"
+#include "techniques/point_in_mesh.h"
 #include "techniques/stencil_volume_shadow.h"
 #include "techniques/projection.h"
 #include "techniques/scene_pass.h"
@@ -115,10 +116,12 @@ PlanarCaster prepare_caster(const Scene &scene, std::size_t index, const SpotLig
   const LitVertices lit = light_vertices(mesh, object.model_to_world, light_view);
   PlanarCaster caster;
   caster.object = index;
-  // A closed caster's light-facing triangles cover its whole shadow, so the others are culled
-  // (the article's "lightface-culled"). An open one (a tube, a sheet) may show the light only
-  // its back faces: those cast too, turned to face the light.
-  const bool closed = is_closed_surface(mesh);
+  // A closed caster's light-facing triangles cover its whole shadow when the light is outside
+  // it, so the others are culled (the article's "lightface-culled"). An open one (a tube, a
+  // sheet) may show the light only its back faces, and a closed one around the light shows it
+  // nothing but them (every ray leaves through one): those cast too, turned to face the light.
+  const bool closed =
+      is_closed_surface(mesh) && !mesh_surrounds(lit.world, mesh.triangles, light.position);
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 &a = lit.world[t.x], &b = lit.world[t.y], &c = lit.world[t.z];
     const bool facing = faces(light.position, a, b, c);

@@ -52,6 +52,7 @@ struct LightView {
   float caster_distance = 0.0f;     // light to the caster's centre
   int size = 256;                   // texels of this texture
   bool clip_to_view = false;        // a tile of a larger map: receivers are clipped to its part
+  bool surrounds_light = false;     // a closed caster around the light: drawn from both sides
   bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
                                     // in the back buffer; a larger one goes direct)
   // False: no texture for this caster. Then either `outside_beam` (nothing of the caster is in
@@ -172,7 +173,7 @@ struct CasterDraw {
   std::vector<float> light_w;         // per vertex, its light clip w
   std::vector<glm::vec4> caster_clip;  // per caster_mesh vertex, light clip space
   std::vector<glm::uvec3> triangles;  // into vertices, in the mesh's order
-  bool closed = true;                 // back faces culled (a closed caster_mesh)
+  bool closed = true;                 // back faces culled (a closed caster_mesh not around the light)
 };
 CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                                    const ProjectedShadowOptions &options);

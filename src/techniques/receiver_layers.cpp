@@ -242,14 +242,17 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
           lit_behind = lit_behind || lt.faces_light;
         }
       }
-      // Only a sample outside the receiver (the surface just in front of it faces away from the
-      // light) needs the mask: one inside it (a caster sunk whole into a mound) is behind a
-      // surface step 3 does not shade with its shadow, or a pierced one masks it already.
+      // A sample outside the receiver (the surface just in front of it faces away from the
+      // light) needs the mask. So does one inside it when the caster does not pass through the
+      // receiver's surface (it lies buried whole in it, as a plate in a slab): the surface in
+      // front of it, which step 3 shades, stays lit. A sample inside a receiver the caster
+      // passes through is masked already (pierced_surfaces.cpp).
       const bool outside = hidden && !front_faces_light;
-      hides = hides || outside;
-      between = between || (outside && lit_behind);
+      const bool buried = hidden && front_faces_light && known == pierced.end();
+      hides = hides || outside || buried;
+      between = between || ((outside || buried) && lit_behind);
       if (between) break;
-      if (outside) unresolved.push_back(&s);
+      if (outside || buried) unresolved.push_back(&s);
     }
     if (!between && !unresolved.empty() && !behind.empty()) {
       bucket_layer_triangles(behind, sample_low, sample_high, grid);

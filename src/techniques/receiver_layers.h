@@ -1,6 +1,7 @@
 // A receiver that is not planar can lie between the light and part of a caster it does not
 // touch (a drum's cap in front of a stick beside it), or hold a caster part between two of its
-// own layers (a pole reaching over a ridge, its middle behind the ridge and above the floor).
+// own layers (a pole reaching over a ridge, its middle behind the ridge and above the floor; a
+// plate buried whole in a shelf's slab over the floor of the same mesh).
 // Seen from the light, per sample of the caster's edges: the first needs the texture masked by
 // the receiver's surface (pierced_receivers.h) so the nearer layer stays lit; the second no
 // single texture can serve, and the projected technique refuses it by name.

@@ -322,3 +322,23 @@ TEST(GroundTruthTest, FightSceneHasCastShadow) {
 }
 
 }  // namespace
+
+// A light lying in the floor's plane reaches none of it: facing is decided per face, as the
+// techniques decide it (edge-on is away), not from each hit point, whose rounding off the plane
+// once lit a random scatter of the floor and called 1.6% of the pixels shadow where every
+// technique drew none (audit x5). Every floor pixel is Outside, none shadowed.
+TEST(GroundTruthTest, ALightInAFacesPlaneReachesNoneOfIt) {
+  gs::Scene scene = box_over_floor();
+  scene.lights[0].position = {-6.0f, 0.0f, 0.3f};
+  scene.lights[0].target = {0.0f, 0.0f, 0.0f};
+  scene.lights[0].cone_degrees = 100.0f;
+  const gs::GroundTruth truth = truth_of(scene);
+  int floor_pixels = 0;
+  for (std::size_t p = 0; p < truth.object.size(); ++p) {
+    if (truth.object[p] != int(kFloor)) continue;
+    ++floor_pixels;
+    EXPECT_EQ(truth.reach[p], gs::LightReach::Outside) << "pixel " << p;
+    EXPECT_EQ(truth.shadow[p], 0) << "pixel " << p;
+  }
+  EXPECT_GT(floor_pixels, 1000);
+}

@@ -41,6 +41,10 @@ TEST(CommandLineExitCodes, UsageErrorsExitTwo) {
         "render " + kHardCases + "/box_over_floor.json --technique no-such-technique",
         "render " + kHardCases + "/box_over_floor.json --shadow-size 100",
         "render " + kHardCases + "/box_over_floor.json --no-such-option",
+        // CLI11's Range lets NaN through; render once ran with glPolygonOffset(NaN) and exited 0.
+        "render " + kHardCases + "/box_over_floor.json --bias-slope nan",
+        "render " + kHardCases + "/box_over_floor.json --bias-units nan",
+        std::string("bench --quick --budget nan"),
         std::string("truth --mask ") + out + "/m.png", "demo --frames 0 --out " + out,
         "demo --shadow-size 4096 --out " + out}) {
     const ToolRun run = run_tool(arguments);

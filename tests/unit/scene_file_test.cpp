@@ -261,6 +261,18 @@ const BadScene kBadScenes[] = {
     {"attenuation_unknown_mode.json", "lights[0].attenuation.mode",
      "must be \"none\", \"vertex\" or \"exact\""},
     {"missing_beam_image.json", "lights[0].beam", "no_such_beam.png: cannot read the image"},
+    // The second audit (issue 14): values tinyobjloader read as 0 or infinity without a word,
+    // and world coordinates that reached the shim as NaN or infinity while render exited 0.
+    {"obj_nan_vertex.json", "objects[0].mesh.obj",
+     "nan_vertex.obj: line 4: 'nan' is not a number finite as a 32-bit float"},
+    {"obj_float_overflow_vertex.json", "objects[0].mesh.obj",
+     "float_overflow_vertex.obj: line 3: '1e39' is not a number finite"},
+    {"obj_comma_normal.json", "objects[0].mesh.obj", "comma_normal.obj: line 5: '0,5' is not a number"},
+    {"scale_beyond_world.json", "objects[0]", "beyond 1e7 m from the origin (the limit)"},
+    {"position_beyond_world.json", "objects[0]", "beyond 1e7 m from the origin (the limit)"},
+    {"heightfield_not_finite.json", "objects[0]", "not a finite number"},
+    {"light_beyond_world.json", "lights[0].position[1]", "must be a number in [-1e7, 1e7]"},
+    {"camera_target_beyond_world.json", "camera.target[0]", "must be a number in [-1e7, 1e7]"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};

@@ -1,0 +1,122 @@
+// The second audit's findings (tests/hard_cases/audit/README.md, "Second audit"), checked against
+// the ray-cast truth with expect_right_or_refused (hard_case_checks.h). A closed caster around
+// the light: its light-facing triangles are none of its shadow (every ray leaves it through a face
+// turned away), so planar cast nothing (85% of the pixels wrong) and the projected techniques too
+// (8.4%), both reported as success. A caster buried whole in a receiver with a layer behind it.
+#include "hard_case_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace hard_cases;  // the checks of hard_case_checks.h
+
+namespace {
+
+// Every technique of `names` right or refused by name on `scene`, as expect_right_or_refused
+// checks all of them; only_in_beam off for scenes of several lights (shadow_where_unlit asks
+// light 0 alone).
+void expect_these_right_or_refused(const std::string &file, const gs::Scene &scene,
+                                   const std::vector<std::string> &names,
+                                   const std::map<std::string, std::string> &refusals,
+                                   bool only_in_beam) {
+  const Truth truth = truth_of(scene);
+  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
+  for (const std::string &name : names) {
+    const Outcome o = run(name, scene, truth);
+    report(file + " " + name, o);
+    expect_clean_glide(name, o);
+    const auto refused = refusals.find(name);
+    if (refused != refusals.end()) {
+      ASSERT_FALSE(o.refusals.empty()) << file << " " << name << ": should refuse, not pass";
+      EXPECT_NE(o.refusals[0].find(refused->second), std::string::npos) << o.refusals[0];
+      continue;
+    }
+    for (const std::string &e : o.refusals) ADD_FAILURE() << file << " " << name << ": " << e;
+    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
+        << file << " " << name;
+    if (only_in_beam) {
+      EXPECT_LE(shadow_where_unlit(o, truth, scene.width, scene.height).farthest, 1)
+          << file << " " << name << ": shadow where the light does not shine";
+    }
+  }
+}
+
+const std::map<std::string, std::string> kCageRefusals = {
+    {"projected", "light 0 and 'cage': no single projection"},
+    {"projected-chroma", "light 0 and 'cage': no single projection"}};
+
+// The light at two more places inside the box (world metres from the file's).
+gs::Scene cage_with_light_moved(const glm::vec3 &offset) {
+  gs::Scene scene = load("audit/k1_light_in_closed_box.json");
+  scene.lights[0].position += offset;
+  return scene;
+}
+const glm::vec3 kCageOffsets[] = {glm::vec3(0.4f, 0.3f, -0.3f), glm::vec3(-0.5f, -0.35f, 0.2f)};
+
+// A 170-degree cone inside a closed box over the floor: everything outside the box is dark.
+// Planar casts the box's back faces; the projected techniques refuse the 171-degree view.
+TEST(HardCases, ClosedBoxAroundTheLightDarkensEverythingOutside) {
+  expect_right_or_refused("audit/k1_light_in_closed_box.json", kCageRefusals);
+  for (const glm::vec3 &offset : kCageOffsets) {
+    expect_these_right_or_refused("k1, the light moved inside the box", cage_with_light_moved(offset),
+                                  {"projected", "projected-chroma", "planar", "stencil-volume"},
+                                  kCageRefusals, true);
+  }
+}
+
+// The depth map on the same two places: 1.9% and 16.5% interior false light, reported as success
+// (a wedge of the floor at the cone's rim falls outside the map's frustum of directions, which
+// depth_map_from_light.cpp fits to the casters inside the beam). The depth map belongs to another
+// change; enable this when its frustum holds a caster around the light.
+TEST(HardCases, DISABLED_ClosedBoxAroundTheLightMovedDepthMap) {
+  for (const glm::vec3 &offset : kCageOffsets) {
+    expect_these_right_or_refused("k1, the light moved inside the box", cage_with_light_moved(offset),
+                                  {"depth-map"}, {}, true);
+  }
+}
+
+}  // namespace
+
+// Light 0 inside a closed ball that receives, light 1 outside: light 0 reaches nothing beyond
+// the ball, so the floor and the crate are dark to it. The projected techniques draw the ball
+// from both sides for light 0 (the floor is wholly outside the ball). The light moved inside the
+// ball and the cone narrowed and widened.
+TEST(HardCases, BallAroundOneOfTwoLights) {
+  expect_right_or_refused("audit/u2_ball_round_light_two_lights.json", {}, false);
+  for (const float cone : {40.0f, 140.0f}) {
+    gs::Scene scene = load("audit/u2_ball_round_light_two_lights.json");
+    scene.lights[0].cone_degrees = cone;
+    scene.lights[0].position += glm::vec3(0.2f, -0.15f, 0.1f);
+    expect_right_or_refused("u2, cone " + std::to_string(cone), scene, {}, false);
+  }
+}
+
+// A closed room around the light and the camera, the floor running out under its walls: lit
+// inside, dark outside. One texture cannot tell the floor inside from the floor beyond, so the
+// projected techniques refuse by name; the others are right.
+TEST(HardCases, RoomAroundTheLightWithTheFloorThroughItsWalls) {
+  const std::map<std::string, std::string> refusals = {
+      {"projected", "light 0 and 'room': the light is inside the caster and 'floor' reaches"},
+      {"projected-chroma", "light 0 and 'room': the light is inside the caster and 'floor'"}};
+  expect_right_or_refused("audit/u1_light_in_room.json", refusals);
+}
+
+// A plate buried whole in the slab of a shelf that is one mesh with the floor (casting nothing):
+// the shelf's top, in front of the plate, stays lit; the floor under it takes the plate's shadow.
+// One texture cannot serve both layers, so the projected techniques refuse by name; before, they
+// shaded the shelf's top with the plate's shadow (1.49% interior false shadow, success). The light
+// also moved 1 m either way along the shelf.
+TEST(HardCases, PlateBuriedInAShelfIsRefusedByName) {
+  const std::map<std::string, std::string> refusals = {
+      {"projected", "light 0 and 'plate': part of the caster lies between two parts of 'shelf and floor'"},
+      {"projected-chroma", "light 0 and 'plate': part of the caster lies between two parts"}};
+  expect_right_or_refused("audit/w2_plate_buried_in_shelf.json", refusals);
+  for (const float along : {-1.0f, 1.0f}) {
+    gs::Scene scene = load("audit/w2_plate_buried_in_shelf.json");
+    scene.lights[0].position.z += along;
+    expect_right_or_refused("w2, the light moved " + std::to_string(along) + " m", scene, refusals);
+  }
+}
