@@ -1,0 +1,52 @@
+// Issue 14's y1 and y2 (tests/hard_cases/audit): the projected techniques on a crate and a rail
+// whose shadows run towards the camera, the light moved. The texel-footprint measure
+// (src/techniques/texel_footprint.*) takes a texel's width across its stretch, which moves an
+// edge running along the light's direction; the shadows' far ends (the crate's top, the rail's
+// bar) run across it, where a texel's long side moves them. Bilinear accepts y1 at 3.3 px
+// (0.68% interior error) and y2 at 3.6 px (0.57%); the chroma-key variant accepts the first
+// variation below at under 3 px (0.17%). Unfixed: docs/hard_cases_results.md ("y1, y2,
+// projected") has the measurements and why an edge-direction measure was not adopted. Enable
+// when the footprint (or another refusal) covers edges across the stretch.
+#include "hard_case_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+using namespace hard_cases;  // the checks of hard_case_checks.h
+
+namespace {
+
+// Both projected techniques right (within the interior budget) or refused as too coarse.
+void expect_projected_right_or_coarse(const std::string &what, const gs::Scene &scene) {
+  const Truth truth = truth_of(scene);
+  ASSERT_GT(truth.shadow_pixels, 200) << what << ": no shadow, the case tests nothing";
+  for (const std::string name : {"projected", "projected-chroma"}) {
+    const Outcome o = run(name, scene, truth);
+    report(what + " " + name, o);
+    expect_clean_glide(name, o);
+    if (!o.refusals.empty()) {
+      EXPECT_NE(o.refusals[0].find("too coarse for the screen"), std::string::npos) << o.refusals[0];
+      continue;
+    }
+    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
+        << what << " " << name;
+  }
+}
+
+}  // namespace
+
+TEST(HardCases, DISABLED_ShadowEndsAcrossTheTexelStretchAreRightOrRefused) {
+  expect_projected_right_or_coarse("y1", load("audit/y1_crate_toward_camera_light_moved.json"));
+  expect_projected_right_or_coarse("y2", load("audit/y2_rail_toward_camera_light_moved.json"));
+  // y1 with the light higher and further aside (world metres): the crate's shadow shorter, its
+  // far end seen nearer the crate.
+  gs::Scene crate = load("audit/y1_crate_toward_camera_light_moved.json");
+  crate.lights[0].position = glm::vec3(-0.9f, 1.8f, -8.548f);
+  expect_projected_right_or_coarse("y1, the light at (-0.9, 1.8)", crate);
+  // y2 with the light 0.5 m to the side and 0.2 m lower.
+  gs::Scene rail = load("audit/y2_rail_toward_camera_light_moved.json");
+  rail.lights[0].position += glm::vec3(0.5f, -0.2f, 0.0f);
+  expect_projected_right_or_coarse("y2, the light moved (0.5, -0.2, 0)", rail);
+}
