@@ -12,10 +12,11 @@
 //                flags, acne, coarse texels, casters through planar and curved receivers), every
 //                technique;
 //   footprint    the projected texture's texel footprint on screen against its interior error;
+//   depth-footprint  the same for the depth map's texels, percentage-closer and nearest;
 //   files F...   any scene files (an audit on scenes the project has not seen): a row per file,
 //                every technique's interior error, or its refusal.
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
-//   hard_case_sweeps [classes|footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
+//   hard_case_sweeps [classes|footprint|depth-footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
 //   (default: all), or hard_case_sweeps files SCENE.json...
 #include "hard_case_scenes.h"
 
@@ -237,11 +238,12 @@ bool classes() {
                "scene", columns, every_technique());
 }
 
-// The projected texture's texel footprint (texel_footprint.h) against its interior error: the
-// fight's three bench frames at 640x480, the sample scenes and the footprint class's scenes, at
-// every size, with the footprint check off so every configuration is measured. Each cell: the
-// footprint in screen pixels, then the interior error (false shadow + false light) in %.
-bool footprint() {
+// Texel footprints (texel_footprint.h) against interior error, the footprint check off so every
+// configuration is measured: the fight's three bench frames at 640x480, the sample scenes and
+// the footprint class's scenes, and `extra` scene files of tests/hard_cases, at every size. Each
+// cell: the footprint in screen pixels, then the interior error (false shadow + false light) in %.
+bool footprint_table(const std::vector<gs::BenchConfiguration> &configurations,
+                     const std::vector<std::string> &extra) {
   std::vector<gs::BenchFrame> frames;
   gs::FightScene fight(640, 480, 256);
   for (float time : {0.5f, 2.1f, 5.3f}) {
@@ -252,20 +254,12 @@ bool footprint() {
   for (const char *name : {"box_on_plane", "fighters", "obj_mesh", "receiver_between", "spotlight"}) {
     frames.push_back({name, hard_cases::load(std::string("../../scenes/") + name + ".json")});
   }
-  for (const char *name : {"box_over_floor", "dueling_frusta", "crate_close_camera",
-                           "pole_low_sun", "table_high_light", "sign_on_wall", "bar_low_light",
-                           "crate_toward_camera", "rail_toward_camera"}) {
-    frames.push_back({name, hard_cases::load(std::string(name) + ".json")});
-  }
-  std::vector<gs::BenchConfiguration> configurations;
-  for (const char *name : {"projected", "projected-chroma"}) {
-    for (int size : {32, 64, 128, 256, 512}) {
-      gs::BenchConfiguration c = plain(name);
-      c.options.projected.size = size;
-      c.options.projected.largest_texel_footprint_px = INFINITY;
-      c.settings = "size " + std::to_string(size);
-      configurations.push_back(c);
-    }
+  std::vector<std::string> files = {"box_over_floor", "dueling_frusta", "crate_close_camera",
+                                    "pole_low_sun", "table_high_light", "sign_on_wall",
+                                    "bar_low_light", "crate_toward_camera", "rail_toward_camera"};
+  files.insert(files.end(), extra.begin(), extra.end());
+  for (const std::string &name : files) {
+    frames.push_back({name.substr(name.find_last_of('/') + 1), hard_cases::load(name + ".json")});
   }
   std::vector<gs::BenchRow> rows;
   std::string error;
@@ -296,6 +290,39 @@ bool footprint() {
   }
   std::fflush(stdout);
   return true;
+}
+
+// The projected texture's footprint, both variants.
+bool footprint() {
+  std::vector<gs::BenchConfiguration> configurations;
+  for (const char *name : {"projected", "projected-chroma"}) {
+    for (int size : {32, 64, 128, 256, 512}) {
+      gs::BenchConfiguration c = plain(name);
+      c.options.projected.size = size;
+      c.options.projected.largest_texel_footprint_px = INFINITY;
+      c.settings = "size " + std::to_string(size);
+      configurations.push_back(c);
+    }
+  }
+  return footprint_table(configurations, {});
+}
+
+// The depth map's footprint (depth_map_footprint.h), percentage-closer and nearest lookups, with
+// the wide cones of the audit and of the class "depth-map texels too coarse" as well.
+bool depth_footprint() {
+  std::vector<gs::BenchConfiguration> configurations;
+  for (bool linear : {true, false}) {
+    for (int size : {32, 64, 128, 256, 512}) {
+      gs::BenchConfiguration c = plain("depth-map");
+      c.options.projected.size = size;
+      c.options.depth_map_linear = linear;
+      c.options.depth_map_largest_footprint_px = INFINITY;
+      c.settings = std::string(linear ? "pcf" : "nearest") + " size " + std::to_string(size);
+      configurations.push_back(c);
+    }
+  }
+  return footprint_table(configurations, {"audit/a2_corridor_walls", "audit/a3_lean_to_roof",
+                                          "audit/i6_post_in_valley_hill_casts"});
 }
 
 // The depth map's default bias, chosen on the scenes where acne and peter-panning show: the two
@@ -396,18 +423,19 @@ int main(int argc, char **argv) {
         "Prints, for each sweep (all of them when none is named), a markdown table of each\n"
         "technique's misclassified %% of receiver pixels against the ray-cast truth, with its\n"
         "interior false shadow and false light in brackets (docs/results.md, \"Numerical hard\n"
-        "cases\"). Sweeps: classes, footprint, acne, tilt, contact, translation, scale, shadow-size,\n"
-        "screen-size; or `files SCENE.json...`: a row per scene file. Exit status 1 when a sweep\n"
+        "cases\"). Sweeps: classes, footprint, depth-footprint, acne, tilt, contact, translation,\n"
+        "scale, shadow-size, screen-size; or `files SCENE.json...`: a row per scene file. Exit status 1 when a sweep\n"
         "could not render, 2 for an unknown sweep.\n");
     return 0;
   }
   if (sweeps.empty()) {
-    sweeps = {"classes", "footprint", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
+    sweeps = {"classes", "footprint", "depth-footprint", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
   }
   for (const std::string &name : sweeps) {
     bool ok = false;
     if (name == "classes") ok = classes();
     else if (name == "footprint") ok = footprint();
+    else if (name == "depth-footprint") ok = depth_footprint();
     else if (name == "acne") ok = acne();
     else if (name == "tilt") ok = tilt();
     else if (name == "contact") ok = contact();
@@ -417,7 +445,7 @@ int main(int argc, char **argv) {
     else if (name == "screen-size") ok = screen_size();
     else {
       std::fprintf(stderr,
-                   "hard_case_sweeps: unknown sweep '%s' (classes, footprint, acne, tilt, contact, "
+                   "hard_case_sweeps: unknown sweep '%s' (classes, footprint, depth-footprint, acne, tilt, contact, "
                    "translation, scale, shadow-size, screen-size)\n",
                    name.c_str());
       return 2;
