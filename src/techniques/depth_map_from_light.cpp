@@ -4,6 +4,7 @@
 // (GL convention); the map's texels (side x side, depth 0..1 from near to far plane).
 #include "techniques/depth_map_passes.h"
 
+#include "techniques/depth_map_facets.h"
 #include "techniques/depth_map_footprint.h"
 #include "techniques/light_beam.h"
 
@@ -107,8 +108,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   const GLint filter = options_.depth_map_linear ? GL_LINEAR : GL_NEAREST;
   const float largest_footprint = options_.depth_map_largest_footprint_px > 0.0f
                                       ? options_.depth_map_largest_footprint_px
-                                  : options_.depth_map_linear ? kLargestDepthMapFootprintPx
-                                                              : kLargestNearestDepthMapFootprintPx;
+                                      : kLargestDepthMapFootprintPx;
   const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
   if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
@@ -189,7 +189,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       if (!mesh.object->casts_shadow || !drawn[static_cast<std::size_t>(mesh.object - scene_.objects.data())]) {
         continue;
       }
-      gl_.glVertexPointer(3, GL_FLOAT, 0, mesh.position.data());
+      // A caster that shadows itself is drawn pushed back where it turns away from the light
+      // between facets (depth_map_facets.h).
+      const std::vector<glm::vec3> positions =
+          mesh.object->receives_shadow && options_.depth_map_facet_bias
+              ? facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side)
+              : mesh.position;
+      gl_.glVertexPointer(3, GL_FLOAT, 0, positions.data());
       gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
                          GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
     }

@@ -55,6 +55,12 @@ struct TechniqueOptions {
   // edges can lie is left out of the map by name (an error). 0: the measured default for the
   // lookup (depth_map_footprint.h); infinity: no check.
   float depth_map_largest_footprint_px = 0.0f;
+  // Depth map: a caster that also receives shadow is drawn into the map with each facet pushed
+  // back from the light by how much faster its neighbour falls away within the lookup's reach
+  // (depth_map_facets.h): glPolygonOffset's slope term covers a facet's own slope only, and a
+  // curved receiver under a low light shadowed itself (acne, up to 0.23% of the pixels). On by
+  // default (the acne sweep, docs/hard_cases_results.md); off only to measure that.
+  bool depth_map_facet_bias = true;
   enum class VolumeMode { Automatic, ZPass, ZFail } volume_mode = VolumeMode::Automatic;
 };
 
