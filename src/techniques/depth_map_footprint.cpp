@@ -22,6 +22,10 @@ constexpr int kSilhouetteCells = 128;
 // centres lie within one texel; half a texel more for rounding (as the projected technique).
 constexpr float kLookupReachTexels = 1.5f;
 
+// A frustum's four sides and its near plane in clip space (GL: kept where dot(plane, clip) >= 0).
+const glm::vec4 kFrustumPlanes[5] = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1},
+                                     {0, 0, 1, 1}};
+
 // Light clip (GL) to the map's texels, for a point with w > 0.
 glm::vec2 map_texels(const glm::vec4 &clip, float side) {
   return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * side;
@@ -35,8 +39,7 @@ int silhouette_cell_of(float texels, float side) {
 // Marks the cells along the part of segment a..b (light clip) inside the map's frustum.
 void trace_in_map(const glm::vec4 &a, const glm::vec4 &b, float side, std::vector<bool> &cells) {
   float from = 0.0f, to = 1.0f;
-  for (const glm::vec4 &plane : {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                 glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1)}) {
+  for (const glm::vec4 &plane : kFrustumPlanes) {
     const float da = glm::dot(plane, a), db = glm::dot(plane, b);
     if (da < 0.0f && db < 0.0f) return;
     if (da < 0.0f) from = std::max(from, da / (da - db));
@@ -44,8 +47,10 @@ void trace_in_map(const glm::vec4 &a, const glm::vec4 &b, float side, std::vecto
   }
   if (from >= to) return;
   const glm::vec2 p = map_texels(a + (b - a) * from, side), q = map_texels(a + (b - a) * to, side);
-  const float cells_long = std::max(std::abs(q.x - p.x), std::abs(q.y - p.y)) / (side / kSilhouetteCells);
-  const int steps = std::min(4 * kSilhouetteCells, static_cast<int>(std::ceil(2.0f * cells_long)) + 1);
+  const float cells_long =
+      std::max(std::abs(q.x - p.x), std::abs(q.y - p.y)) / (side / kSilhouetteCells);
+  const int steps =
+      std::min(4 * kSilhouetteCells, static_cast<int>(std::ceil(2.0f * cells_long)) + 1);
   for (int k = 0; k <= steps; ++k) {
     const glm::vec2 t = p + (q - p) * (static_cast<float>(k) / static_cast<float>(steps));
     cells[static_cast<std::size_t>(silhouette_cell_of(t.y, side) * kSilhouetteCells +
@@ -122,8 +127,7 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
   std::vector<glm::vec4> bounds;
   const glm::mat4 camera_planes = glm::transpose(space.camera_clip);
   const glm::mat4 light_planes = glm::transpose(space.light_clip);
-  for (const glm::vec4 &side_plane : {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                      glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1)}) {
+  for (const glm::vec4 &side_plane : kFrustumPlanes) {
     bounds.push_back(camera_planes * side_plane);
     bounds.push_back(light_planes * side_plane);
   }
@@ -183,7 +187,9 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
       const glm::vec3 normal = glm::normalize(face);
       for (CasterEdges &caster : casters) {
         planes = {caster.beyond_front};
-        if (!silhouette_rectangle(caster.cells, low, high, texels, space.light_clip, planes)) continue;
+        if (!silhouette_rectangle(caster.cells, low, high, texels, space.light_clip, planes)) {
+          continue;
+        }
         part = polygon;
         FootprintSample sample = texel_footprint(space, normal, planes, part, scratch);
         if (!(sample.screen_area > 0.0f)) continue;

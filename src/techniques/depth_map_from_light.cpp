@@ -186,9 +186,8 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     gl_.glLoadMatrixf(&frustum.view[0][0]);
     // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
     for (const WorldMesh &mesh : meshes_) {
-      if (!mesh.object->casts_shadow || !drawn[static_cast<std::size_t>(mesh.object - scene_.objects.data())]) {
-        continue;
-      }
+      const auto object = static_cast<std::size_t>(mesh.object - scene_.objects.data());
+      if (!mesh.object->casts_shadow || !drawn[object]) continue;
       // A caster that shadows itself is drawn pushed back where it turns away from the light
       // between facets (depth_map_facets.h).
       const std::vector<glm::vec3> positions =

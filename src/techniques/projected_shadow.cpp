@@ -323,7 +323,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       if (coarsest.pixels_per_texel > largest_footprint) {
         result.errors.push_back(texel_footprint_error(scene, light, caster, coarsest.receiver,
                                                       coarsest.pixels_per_texel, largest_footprint,
-                                                      fitted.size, 512));
+                                                      fitted.size, 512));  // its largest size
         next_address = caster_address;  // its textures are not used
         continue;
       }
