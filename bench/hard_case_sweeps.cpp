@@ -12,19 +12,21 @@
 //                flags, acne, coarse texels, casters through planar and curved receivers), every
 //                technique;
 //   footprint    the projected texture's texel footprint on screen against its interior error;
+//   depth-footprint  the same for the depth map's texels, percentage-closer and nearest;
 //   files F...   any scene files (an audit on scenes the project has not seen): a row per file,
 //                every technique's interior error, or its refusal.
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
-//   hard_case_sweeps [classes|footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
+//   hard_case_sweeps [classes|footprint|depth-footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
 //   (default: all), or hard_case_sweeps files SCENE.json...
+#include "hard_case_footprint.h"
 #include "hard_case_scenes.h"
 
 #include "measure/speed_error.h"
-#include "scene/fight_scene.h"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -237,89 +239,41 @@ bool classes() {
                "scene", columns, every_technique());
 }
 
-// The projected texture's texel footprint (texel_footprint.h) against its interior error: the
-// fight's three bench frames at 640x480, the sample scenes and the footprint class's scenes, at
-// every size, with the footprint check off so every configuration is measured. Each cell: the
-// footprint in screen pixels, then the interior error (false shadow + false light) in %.
-bool footprint() {
-  std::vector<gs::BenchFrame> frames;
-  gs::FightScene fight(640, 480, 256);
-  for (float time : {0.5f, 2.1f, 5.3f}) {
-    char name[32];
-    std::snprintf(name, sizeof name, "fight t=%.1f", static_cast<double>(time));
-    frames.push_back({name, fight.at(time)});
-  }
-  for (const char *name : {"box_on_plane", "fighters", "obj_mesh", "receiver_between", "spotlight"}) {
-    frames.push_back({name, hard_cases::load(std::string("../../scenes/") + name + ".json")});
-  }
-  for (const char *name : {"box_over_floor", "dueling_frusta", "crate_close_camera",
-                           "pole_low_sun", "table_high_light", "sign_on_wall", "bar_low_light",
-                           "crate_toward_camera", "rail_toward_camera"}) {
-    frames.push_back({name, hard_cases::load(std::string(name) + ".json")});
-  }
-  std::vector<gs::BenchConfiguration> configurations;
-  for (const char *name : {"projected", "projected-chroma"}) {
-    for (int size : {32, 64, 128, 256, 512}) {
-      gs::BenchConfiguration c = plain(name);
-      c.options.projected.size = size;
-      c.options.projected.largest_texel_footprint_px = INFINITY;
-      c.settings = "size " + std::to_string(size);
-      configurations.push_back(c);
-    }
-  }
-  std::vector<gs::BenchRow> rows;
-  std::string error;
-  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
-                     error)) {
-    std::fprintf(stderr, "hard_case_sweeps: footprint: %s\n", error.c_str());
-    return false;
-  }
-  std::printf("\n### Texel footprint against interior error (the check off)\n\n"
-              "footprint in screen pixels per texel: interior error %% (false shadow + false "
-              "light)\n\n| technique |");
-  for (const gs::BenchFrame &frame : frames) std::printf(" %s |", frame.name.c_str());
-  std::printf("\n|---|");
-  for (std::size_t f = 0; f < frames.size(); ++f) std::printf("---|");
-  std::printf("\n");
-  for (std::size_t k = 0; k < configurations.size(); ++k) {
-    std::printf("| %s %s |", configurations[k].technique.c_str(), configurations[k].settings.c_str());
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-      const gs::BenchRow &row = rows[f * configurations.size() + k];
-      if (row.failed) {
-        std::printf(" failed |");
-        continue;
-      }
-      std::printf(" %.2f: %.3f |", row.texel_footprint_px,
-                  (row.errors.false_shadow_interior + row.errors.false_light_interior) * 100.0);
-    }
-    std::printf("\n");
-  }
-  std::fflush(stdout);
-  return true;
-}
-
 // The depth map's default bias, chosen on the scenes where acne and peter-panning show: the two
-// acne scenes of issue 14, the lone plane at grazing angles, the box resting on the floor, and
-// the spotlight sample's kind of scene (box over floor). Percentage-closer and nearest filtering,
-// slope factors 1..4, units 4 and 16.
+// acne scenes of issue 14, the lone plane at grazing angles, the box resting on the floor, the
+// spotlight sample's kind of scene (box over floor), and curved receivers shadowing themselves
+// (the audit's waves, the class "curved receivers in their own shadow", waves_low_sun varied).
+// Percentage-closer and nearest filtering, slope factors 1..16, units 4 and 16, without and with
+// the facet bias (depth_map_facets.h).
 bool acne() {
   std::vector<Column> columns;
   for (const char *name : {"tilted_plate_oblique", "light_facing_camera_posts", "box_resting",
-                           "box_over_floor", "dueling_frusta"}) {
-    columns.push_back({name, {name, hard_cases::load(std::string(name) + ".json")}});
+                           "box_over_floor", "dueling_frusta", "audit/i6_post_in_valley_hill_casts",
+                           "waves_low_sun", "dunes_side_light", "ripples_grazing"}) {
+    const std::string file = name;
+    columns.push_back({file.substr(file.find_last_of('/') + 1), {name, hard_cases::load(file + ".json")}});
   }
   for (int degrees : {60, 85, 89}) {
     columns.push_back({"tilt " + std::to_string(degrees),
                        {"tilt " + std::to_string(degrees),
                         hard_cases::grazing_plane(static_cast<float>(degrees))}});
   }
+  for (const auto &[elevation, amplitude] : std::vector<std::pair<float, float>>{{8, 0.6f}, {40, 0.6f}, {15, 1.2f}}) {
+    char label[64];
+    std::snprintf(label, sizeof label, "waves %g deg %g m", static_cast<double>(elevation),
+                  static_cast<double>(amplitude));
+    columns.push_back({label, {label, hard_cases::waves_low_sun(elevation, amplitude)}});
+  }
   std::vector<gs::BenchConfiguration> configurations;
   for (bool linear : {true, false}) {
-    for (const auto &bias : std::vector<std::pair<float, float>>{
-             {1, 4}, {1.5f, 4}, {2, 4}, {2, 16}, {3, 4}, {4, 4}, {8, 4}}) {
-      gs::BenchConfiguration c = depth_map(bias.first, bias.second);
+    for (const auto &[slope, units, facets] : std::vector<std::tuple<float, float, bool>>{
+             {1, 4, false}, {2, 4, false}, {2, 16, false}, {4, 4, false}, {8, 4, false},
+             {16, 4, false}, {1, 4, true}, {2, 4, true}, {4, 4, true}}) {
+      gs::BenchConfiguration c = depth_map(slope, units);
       c.options.depth_map_linear = linear;
-      c.settings += linear ? " pcf" : " nearest";
+      c.options.depth_map_facet_bias = facets;
+      c.options.depth_map_largest_footprint_px = INFINITY;  // every scene measured, none refused
+      c.settings += std::string(facets ? " facets" : "") + (linear ? " pcf" : " nearest");
       configurations.push_back(c);
     }
   }
@@ -396,18 +350,19 @@ int main(int argc, char **argv) {
         "Prints, for each sweep (all of them when none is named), a markdown table of each\n"
         "technique's misclassified %% of receiver pixels against the ray-cast truth, with its\n"
         "interior false shadow and false light in brackets (docs/results.md, \"Numerical hard\n"
-        "cases\"). Sweeps: classes, footprint, acne, tilt, contact, translation, scale, shadow-size,\n"
-        "screen-size; or `files SCENE.json...`: a row per scene file. Exit status 1 when a sweep\n"
-        "could not render, 2 for an unknown sweep.\n");
+        "cases\"). Sweeps: classes, footprint, depth-footprint, acne, tilt, contact, translation,\n"
+        "scale, shadow-size, screen-size; or `files SCENE.json...`: a row per scene file. Exit\n"
+        "status 1 when a sweep could not render, 2 for an unknown sweep.\n");
     return 0;
   }
   if (sweeps.empty()) {
-    sweeps = {"classes", "footprint", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
+    sweeps = {"classes", "footprint", "depth-footprint", "acne", "tilt", "contact", "translation", "scale", "shadow-size", "screen-size"};
   }
   for (const std::string &name : sweeps) {
     bool ok = false;
     if (name == "classes") ok = classes();
-    else if (name == "footprint") ok = footprint();
+    else if (name == "footprint") ok = hard_cases::footprint();
+    else if (name == "depth-footprint") ok = hard_cases::depth_footprint();
     else if (name == "acne") ok = acne();
     else if (name == "tilt") ok = tilt();
     else if (name == "contact") ok = contact();
@@ -417,7 +372,7 @@ int main(int argc, char **argv) {
     else if (name == "screen-size") ok = screen_size();
     else {
       std::fprintf(stderr,
-                   "hard_case_sweeps: unknown sweep '%s' (classes, footprint, acne, tilt, contact, "
+                   "hard_case_sweeps: unknown sweep '%s' (classes, footprint, depth-footprint, acne, tilt, contact, "
                    "translation, scale, shadow-size, screen-size)\n",
                    name.c_str());
       return 2;

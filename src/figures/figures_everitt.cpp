@@ -306,6 +306,8 @@ void figure_everitt_5(Figure &figure, FigureFault fault) {
   nearest.projected.size = linear.projected.size = 32;
   nearest.depth_map_linear = false;
   linear.depth_map_linear = fault != FigureFault::PointSampled;
+  // The figure shows coarse texels on purpose: the coarse-texel refusal is off.
+  nearest.depth_map_largest_footprint_px = linear.depth_map_largest_footprint_px = INFINITY;
   const Words lit = figures::render_frame("none", {}, scene);
   Scene dark = scene;
   dark.lights.clear();

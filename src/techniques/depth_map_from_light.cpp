@@ -4,6 +4,8 @@
 // (GL convention); the map's texels (side x side, depth 0..1 from near to far plane).
 #include "techniques/depth_map_passes.h"
 
+#include "techniques/depth_map_facets.h"
+#include "techniques/depth_map_footprint.h"
 #include "techniques/light_beam.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -104,6 +106,9 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   gl_.glEnable(GL_POLYGON_OFFSET_FILL);
   gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);
   const GLint filter = options_.depth_map_linear ? GL_LINEAR : GL_NEAREST;
+  const float largest_footprint = options_.depth_map_largest_footprint_px > 0.0f
+                                      ? options_.depth_map_largest_footprint_px
+                                      : kLargestDepthMapFootprintPx;
   const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
   if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
@@ -131,6 +136,21 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       warnings.push_back(frustum.problem);
       errors.push_back(frustum.problem);
       continue;
+    }
+    // A caster whose shadow edges would stray from the true ones (its texels too coarse for the
+    // screen there) is left out of this light's map, by name, as the projected techniques leave
+    // out their texture.
+    std::vector<bool> drawn(scene_.objects.size(), true);
+    for (const CasterFootprint &footprint :
+         caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side)) {
+      const float pixels = footprint.coarsest.pixels_per_texel;
+      texel_footprint_px_ = std::max(texel_footprint_px_, pixels);
+      if (!(pixels > largest_footprint)) continue;
+      drawn[footprint.caster] = false;
+      errors.push_back(texel_footprint_error(scene_, light, footprint.caster,
+                                             footprint.coarsest.receiver, pixels,
+                                             largest_footprint, side, kLargestMap));
+      warnings.push_back(errors.back());
     }
     GLuint map = 0;
     gl_.glGenTextures(1, &map);
@@ -166,8 +186,15 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     gl_.glLoadMatrixf(&frustum.view[0][0]);
     // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
     for (const WorldMesh &mesh : meshes_) {
-      if (!mesh.object->casts_shadow) continue;
-      gl_.glVertexPointer(3, GL_FLOAT, 0, mesh.position.data());
+      const auto object = static_cast<std::size_t>(mesh.object - scene_.objects.data());
+      if (!mesh.object->casts_shadow || !drawn[object]) continue;
+      // A caster that shadows itself is drawn pushed back where it turns away from the light
+      // between facets (depth_map_facets.h).
+      const std::vector<glm::vec3> positions =
+          mesh.object->receives_shadow && options_.depth_map_facet_bias
+              ? facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side)
+              : mesh.position;
+      gl_.glVertexPointer(3, GL_FLOAT, 0, positions.data());
       gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
                          GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
     }

@@ -40,8 +40,13 @@ class Passes {
   Passes(const Passes &) = delete;
   Passes &operator=(const Passes &) = delete;
 
-  // Step 1; a light left without its map is an error (it casts no shadow).
+  // Step 1; a light left without its map is an error (it casts no shadow), and so is a caster
+  // left out of a light's map because its texels are too coarse for the screen where its shadow
+  // edges lie (depth_map_footprint.h).
   void depth_from_lights(std::vector<std::string> &warnings, std::vector<std::string> &errors);
+  // After step 1: the most screen pixels a map texel spanned where a shadow edge can lie, over
+  // every light and caster, drawn or left out (what the footprint limit bounds).
+  float texel_footprint_px() const { return texel_footprint_px_; }
   void ambient_pass();                                         // step 2
   void lit_passes();                                           // step 3
   // The mask over the frame's depth buffer (after steps 1-3 of the same scene).
@@ -67,6 +72,7 @@ class Passes {
   GLuint gate_ = 0;                     // the q gate's step texture
   GLint target_framebuffer_ = 0;        // the shim's, holding Glide's back buffer
   GLint window_[4] = {};                // the shim's viewport: the whole window
+  float texel_footprint_px_ = 0.0f;
 };
 
 }  // namespace gs::depth_map

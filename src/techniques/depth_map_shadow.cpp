@@ -298,6 +298,7 @@ class DepthMapShadow final : public ShadowTechnique {
            [&] { passes.depth_from_lights(report.warnings, report.errors); });
       step("2 ambient pass", [&] { passes.ambient_pass(); });
       step("3 lit pass with the depth test", [&] { passes.lit_passes(); });
+      report.texel_footprint_px = passes.texel_footprint_px();
     }
     report_gl_errors(gl, report.warnings);
     glideShimEndGL();

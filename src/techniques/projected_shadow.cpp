@@ -26,26 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The refusal of a shadow whose texels are too coarse for the screen, naming the light, the
-// caster, the receiver, the footprint, the largest accepted and the smallest size that would be
-// accepted (the footprint halves as the size doubles).
-std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
-                                  std::size_t receiver, float footprint, float largest, int size) {
-  int accepted = size;
-  while (accepted <= 512 && footprint * static_cast<float>(size) / static_cast<float>(accepted) > largest) {
-    accepted *= 2;
-  }
-  char pixels[64];
-  std::snprintf(pixels, sizeof pixels, "%.1f screen pixels (the largest accepted is %.1f)",
-                static_cast<double>(footprint), static_cast<double>(largest));
-  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
-         "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
-         "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
-         (accepted <= 512 ? "size " + std::to_string(accepted) + " would be accepted"
-                          : std::string("no size up to 512 would be accepted")) +
-         "); it casts no shadow from this light";
-}
-
 }  // namespace
 
 // Step 2: the region read back and downloaded as ARGB_4444 (or already in texture memory).
@@ -343,7 +323,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       if (coarsest.pixels_per_texel > largest_footprint) {
         result.errors.push_back(texel_footprint_error(scene, light, caster, coarsest.receiver,
                                                       coarsest.pixels_per_texel, largest_footprint,
-                                                      fitted.size));
+                                                      fitted.size, 512));  // its largest size
         next_address = caster_address;  // its textures are not used
         continue;
       }

@@ -26,8 +26,8 @@ struct FrameReport {
   // Shadows this frame should show and does not (a caster or a light left without its shadow,
   // each naming them): the frame is wrong, and no caller may report it as a success.
   std::vector<std::string> errors;
-  // The projected techniques: the most screen pixels one shadow texel spans where a shadow can
-  // fall (texel_footprint.h); 0 for the others.
+  // The projected techniques and the depth map: the most screen pixels one shadow texel (or
+  // depth-map texel) spans where a shadow edge can fall (texel_footprint.h); 0 for the others.
   double texel_footprint_px = 0.0;
 };
 
@@ -51,6 +51,16 @@ struct TechniqueOptions {
   float depth_bias_units = 4.0f;     // depth map: glPolygonOffset units
   bool depth_map_linear = true;      // depth map: percentage-closer (GL_LINEAR) or nearest
   int depth_map_bits = 24;           // depth map: 16 or 24-bit depth texture
+  // Depth map: a caster whose map texels span more screen pixels than this where its shadow
+  // edges can lie is left out of the map by name (an error). 0: the measured default for the
+  // lookup (depth_map_footprint.h); infinity: no check.
+  float depth_map_largest_footprint_px = 0.0f;
+  // Depth map: a caster that also receives shadow is drawn into the map with each facet pushed
+  // back from the light by how much faster its neighbour falls away within the lookup's reach
+  // (depth_map_facets.h): glPolygonOffset's slope term covers a facet's own slope only, and a
+  // curved receiver under a low light shadowed itself (acne, up to 0.23% of the pixels). On by
+  // default (the acne sweep, docs/hard_cases_results.md); off only to measure that.
+  bool depth_map_facet_bias = true;
   enum class VolumeMode { Automatic, ZPass, ZFail } volume_mode = VolumeMode::Automatic;
 };
 

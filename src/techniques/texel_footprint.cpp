@@ -1,11 +1,13 @@
 // The texture-to-screen stretch of a projected shadow texture on a receiver polygon: both the
 // light's and the camera's projections differentiated on the polygon's plane (world space), in
 // texels and pixels per metre, and pixels per texel across the texel's stretch; and a whole
-// shadow's footprint from its polygons'.
+// shadow's footprint from its polygons'; the refusal of a shadow whose texels are too coarse.
 #include "techniques/texel_footprint.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace gs {
@@ -93,6 +95,26 @@ FootprintSample shadow_footprint(std::vector<FootprintSample> samples, float ign
     if (left_out > ignored_pixels) return sample;
   }
   return {};
+}
+
+std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver, float footprint, float largest, int size,
+                                  int largest_size) {
+  int accepted = size;
+  while (accepted <= largest_size &&
+         footprint * static_cast<float>(size) / static_cast<float>(accepted) > largest) {
+    accepted *= 2;
+  }
+  char pixels[64];
+  std::snprintf(pixels, sizeof pixels, "%.1f screen pixels (the largest accepted is %.1f)",
+                static_cast<double>(footprint), static_cast<double>(largest));
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
+         "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
+         "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
+         (accepted <= largest_size
+              ? "size " + std::to_string(accepted) + " would be accepted"
+              : "no size up to " + std::to_string(largest_size) + " would be accepted") +
+         "); it casts no shadow from this light";
 }
 
 }  // namespace gs

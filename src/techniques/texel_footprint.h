@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace gs {
@@ -60,5 +61,13 @@ FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &no
 // covering at most `ignored_pixels` of the screen, are left out (the sample returned names the
 // receiver). A zero sample when there is none.
 FootprintSample shadow_footprint(std::vector<FootprintSample> samples, float ignored_pixels);
+
+// The refusal of a shadow whose texels are too coarse for the screen (the projected techniques'
+// and the depth map's), naming the light, the caster, the receiver, the footprint, the largest
+// accepted and the smallest size up to `largest_size` (the technique's largest map) that would
+// be accepted: the footprint halves as the size doubles.
+std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
+                                  std::size_t receiver, float footprint, float largest, int size,
+                                  int largest_size);
 
 }  // namespace gs

@@ -59,4 +59,16 @@ inline gs::Scene grazing_plane(float degrees) {
   return scene;
 }
 
+// waves_low_sun.json with its light `elevation_degrees` above the ground (9 m from the waves'
+// centre, from the file's side) and the waves' height scaled to `amplitude` metres (the file's
+// is 0.6): a curved receiver shadowing itself, for the depth map's bias.
+inline gs::Scene waves_low_sun(float elevation_degrees, float amplitude) {
+  gs::Scene scene = load("waves_low_sun.json");
+  const float angle = glm::radians(elevation_degrees);
+  scene.lights[0].position = glm::vec3(-9.0f * std::cos(angle), 9.0f * std::sin(angle), 1.0f);
+  scene.objects[0].model_to_world =
+      glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, amplitude / 0.6f, 1.0f));
+  return scene;
+}
+
 }  // namespace hard_cases
