@@ -54,8 +54,6 @@ constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
 constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
 
-float nearer(float oow, float codes) { return oow * std::exp2(codes / 4096.0f); }
-
 // The Voodoo's 12.4 screen coordinates: what the rasteriser uses of a vertex's x and y.
 float snap(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
 
@@ -78,6 +76,47 @@ bool depth_plane(const GrVertex &p, const GrVertex &q, const GrVertex &r, DepthP
   return true;
 }
 
+// Draws `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) `codes` nearer
+// than that plane, at alpha `alpha`. Clip w counts near-plane distances (projection.cpp), so the
+// receiver's 1/w reaches 1 at the camera's near plane, and the W-buffer holds nothing nearer: the
+// shim clamps each vertex's 1/w to 1. A vertex pushed past 1 would lower the depth the whole
+// polygon iterates, so that its interior near the near plane kept a fraction of the margin
+// (tests/hard_cases/audit/y3: well under a code, 9 px from the near plane's line on the floor,
+// where the scene pass's iteration strays by up to 4). So the polygon is cut along the line on
+// which its raised 1/w is 1 (1/w is affine in screen space): the part short of it keeps the whole
+// margin, the part past it (receiver depths within `codes` of the near plane) is drawn at 1.
+void draw_nearer(const std::vector<GrVertex> &polygon, const DepthPlane &plane, float codes,
+                 float alpha, std::vector<GrVertex> &short_part, std::vector<GrVertex> &past_part) {
+  const float scale = std::exp2(codes / 4096.0f);
+  short_part.clear();
+  past_part.clear();
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    GrVertex a = polygon[i];
+    const GrVertex &b = polygon[(i + 1) % n];
+    const float da = a.oow * scale, db = b.oow * scale;
+    a.a = alpha;
+    a.oow = std::min(da, 1.0f);
+    if (da <= 1.0f) short_part.push_back(a);
+    if (da >= 1.0f) past_part.push_back(a);
+    if ((da < 1.0f) != (db < 1.0f) && da != 1.0f && db != 1.0f) {
+      // From the same end whichever way the edge is walked, so neighbours sharing it agree.
+      const bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+      const GrVertex &p = forward ? polygon[i] : b, &q = forward ? b : polygon[i];
+      const double dp = forward ? da : db, dq = forward ? db : da;
+      const double t = (1.0 - dp) / (dq - dp);  // where the raised 1/w is 1
+      GrVertex cut = a;
+      cut.x = snap(static_cast<float>(p.x + (q.x - p.x) * t));
+      cut.y = snap(static_cast<float>(p.y + (q.y - p.y) * t));
+      cut.oow = std::min(static_cast<float>(plane.at(cut.x, cut.y)) * scale, 1.0f);
+      short_part.push_back(cut);
+      past_part.push_back(cut);
+    }
+  }
+  if (short_part.size() >= 3) draw_fan(short_part);
+  if (past_part.size() >= 3) draw_fan(past_part);
+}
+
 // Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
 // buffer, whose depth buffer holds the scene pass's surfaces.
 void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
@@ -94,7 +133,7 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
                        GR_BLEND_ZERO);
   std::vector<ClipVertex> polygon, receiver_polygon, scratch;
-  std::vector<GrVertex> screen, receiver_screen;
+  std::vector<GrVertex> screen, receiver_screen, short_part, past_part;
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
     const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
@@ -140,10 +179,8 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
         v.oow = static_cast<float>(plane.at(v.x, v.y));
       }
       const float cover = band + (clipped ? kClippedCoverCodes : kCoverCodes);
-      for (GrVertex &v : screen) v.oow = nearer(v.oow, cover), v.a = alpha;
-      draw_fan(screen);
-      for (GrVertex &v : screen) v.oow = nearer(v.oow, kCoverSealCodes), v.a = 0.0f;
-      draw_fan(screen);
+      draw_nearer(screen, plane, cover, alpha, short_part, past_part);
+      draw_nearer(screen, plane, cover + kCoverSealCodes, 0.0f, short_part, past_part);
     }
   }
   set_scene_state();
