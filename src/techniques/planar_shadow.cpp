@@ -53,6 +53,9 @@ constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
 constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
+constexpr float kCoverPixels = 1.0f / 16.0f;
+constexpr float kSealPixels = 2.0f * kCoverPixels;
+constexpr float kLightBandPixels = kCoverPixels + kSealPixels + kCoverPixels;
 
 // The Voodoo's 12.4 screen coordinates: what the rasteriser uses of a vertex's x and y.
 float snap(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
@@ -76,25 +79,44 @@ bool depth_plane(const GrVertex &p, const GrVertex &q, const GrVertex &r, DepthP
   return true;
 }
 
-// Draws `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) `codes` nearer
-// than that plane, at alpha `alpha`. Clip w counts near-plane distances (projection.cpp), so the
+// Whether the shim clips a triangle with this vertex to the screen (guDrawTriangleWithClip):
+// the rasteriser's clip window is the whole screen, and the shim tests the snapped vertex.
+bool outside_window(const GrVertex &v, const Scene &scene) {
+  const float x = snap(v.x), y = snap(v.y);
+  return !(x >= 0.0f && x < static_cast<float>(scene.width) && y >= 0.0f &&
+           y < static_cast<float>(scene.height));
+}
+
+// A depth level over a receiver: 1/w raised by `codes` W-buffer codes (a share of the depth)
+// plus what the receiver's depth changes over `pixels` pixels of screen along x and along y
+// (an absolute amount, so 1/w stays affine in screen space).
+struct Level {
+  float codes = 0.0f, pixels = 0.0f;
+};
+
+// Draws `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) at `level` above
+// that plane, at alpha `alpha`. Clip w counts near-plane distances (projection.cpp), so the
 // receiver's 1/w reaches 1 at the camera's near plane, and the W-buffer holds nothing nearer: the
 // shim clamps each vertex's 1/w to 1. A vertex pushed past 1 would lower the depth the whole
 // polygon iterates, so that its interior near the near plane kept a fraction of the margin
-// (tests/hard_cases/audit/y3: well under a code, 9 px from the near plane's line on the floor,
-// where the scene pass's iteration strays by up to 4). So the polygon is cut along the line on
-// which its raised 1/w is 1 (1/w is affine in screen space): the part short of it keeps the whole
-// margin, the part past it (receiver depths within `codes` of the near plane) is drawn at 1.
-void draw_nearer(const std::vector<GrVertex> &polygon, const DepthPlane &plane, float codes,
-                 float alpha, std::vector<GrVertex> &short_part, std::vector<GrVertex> &past_part) {
-  const float scale = std::exp2(codes / 4096.0f);
+// (tests/hard_cases/audit/y3: well under a code, 9 px from the near plane's line on the floor).
+// So the polygon is cut along the line on which its raised 1/w is 1 (1/w is affine in screen
+// space): the part short of it keeps the whole margin, the part past it (receiver depths within
+// the level of the near plane) is drawn at 1.
+void draw_at_level(const std::vector<GrVertex> &polygon, const DepthPlane &plane, Level level,
+                   float alpha, std::vector<GrVertex> &short_part,
+                   std::vector<GrVertex> &past_part) {
+  const float scale = std::exp2(level.codes / 4096.0f);
+  const float offset =
+      static_cast<float>((std::abs(plane.a) + std::abs(plane.b)) * level.pixels);
+  auto raise = [&](double oow) { return static_cast<float>(oow) * scale + offset; };
   short_part.clear();
   past_part.clear();
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
     GrVertex a = polygon[i];
     const GrVertex &b = polygon[(i + 1) % n];
-    const float da = a.oow * scale, db = b.oow * scale;
+    const float da = raise(a.oow), db = raise(b.oow);
     a.a = alpha;
     a.oow = std::min(da, 1.0f);
     if (da <= 1.0f) short_part.push_back(a);
@@ -108,7 +130,7 @@ void draw_nearer(const std::vector<GrVertex> &polygon, const DepthPlane &plane, 
       GrVertex cut = a;
       cut.x = snap(static_cast<float>(p.x + (q.x - p.x) * t));
       cut.y = snap(static_cast<float>(p.y + (q.y - p.y) * t));
-      cut.oow = std::min(static_cast<float>(plane.at(cut.x, cut.y)) * scale, 1.0f);
+      cut.oow = std::min(raise(plane.at(cut.x, cut.y)), 1.0f);
       short_part.push_back(cut);
       past_part.push_back(cut);
     }
@@ -156,9 +178,13 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       bool has_plane = false;
       const bool clipped =
           (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) != 0;
+      bool past_window = false;
       if (!clipped) {
         has_plane =
             depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane);
+        for (unsigned index : {t.x, t.y, t.z}) {
+          past_window = past_window || outside_window(receiver.screen[index], scene);
+        }
       } else {
         receiver_polygon.clear();
         for (unsigned index : {t.x, t.y, t.z}) {
@@ -172,15 +198,20 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
           const float area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
           if (area > largest && depth_plane(a, b, c, plane)) largest = area, has_plane = true;
         }
+        for (const GrVertex &v : receiver_screen) past_window = past_window || outside_window(v, scene);
       }
       if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
       for (GrVertex &v : screen) {
         v.x = snap(v.x), v.y = snap(v.y);
         v.oow = static_cast<float>(plane.at(v.x, v.y));
       }
-      const float cover = band + (clipped ? kClippedCoverCodes : kCoverCodes);
-      draw_nearer(screen, plane, cover, alpha, short_part, past_part);
-      draw_nearer(screen, plane, cover + kCoverSealCodes, 0.0f, short_part, past_part);
+      const float pixels = past_window ? 1.0f : 0.0f;
+      const Level cover = {band + (clipped ? kClippedCoverCodes : kCoverCodes),
+                           pixels * (static_cast<float>(l) * kLightBandPixels + kCoverPixels)};
+      draw_at_level(screen, plane, cover, alpha, short_part, past_part);
+      draw_at_level(screen, plane,
+                    {cover.codes + kCoverSealCodes, cover.pixels + pixels * kSealPixels}, 0.0f,
+                    short_part, past_part);
     }
   }
   set_scene_state();
