@@ -37,22 +37,33 @@ namespace {
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
 // Each light gets its own band above the previous one's seals, so its covers pass them.
-// The cover's margin is 2 codes (w times 1.0003): across a receiver triangle that spans much of
-// the screen the iteration of 1/w strays from the plane of its snapped vertices by more than a
-// code, and a margin of 1 left speckled holes in shadows near the camera (0.06 to 0.27% of the
-// receiver pixels, interior, on tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A
-// larger margin lets covers on a floor pass the feet of what stands on it, a pixel or two of
-// the contact line (4 codes: 5 pixels on a fighter's foot).
+// The cover's margin is 2 codes (w times 1.0003): a margin of 1 left speckled holes in shadows
+// near the camera (0.06 to 0.27% of the receiver pixels, interior, on
+// tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A larger margin lets covers on a
+// floor pass the feet of what stands on it, a pixel or two of the contact line (4 codes: 5
+// pixels on a fighter's foot).
 // Over a receiver the scene pass clipped through the camera it is 8 codes (w times 1.0014): the
-// scene pass drew that receiver as a fan of its clipped polygon, and on a floor seen at a grazing
-// angle from 0.3 m the hardware's iteration of 1/w across such a large (guard-band) triangle
-// strays from the plane of its vertices by up to 4 codes (tests/hard_cases/eye_near_plane.json).
-// An occluder closer to the receiver than 0.03% (0.14%) of its distance may let a cover show
-// through.
+// scene pass drew that receiver as a fan of its clipped polygon, whose triangles stray from the
+// plane of the largest by up to 4 codes on a floor seen at a grazing angle from 0.3 m
+// (tests/hard_cases/eye_near_plane.json).
+// Over a receiver triangle that reaches past the screen (guard band or camera-clipped) the margin
+// also holds what its 1/w changes over kCoverPixels along x plus along y (Level below): the
+// shim's guDrawTriangleWithClip clips it to the window and snaps the vertices it makes there to
+// 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
+// by up to 1/32 px of its gradient (measured: 2.8 codes at the right edge of
+// tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%), and the cover, clipped
+// the same way, by as much again. Receivers inside the window get none of it: on a receiver seen
+// edge-on it would let covers pass what lies close in front of it (with it on every receiver,
+// the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
+// An occluder closer to the receiver than 0.03% (0.14%) of its distance, plus that 1/16 px of its
+// gradient near the screen's edges, may let a cover show through.
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
 constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
+// In pixels of the receiver's gradient, over receivers past the window only: the seal clears
+// later covers by kCoverPixels beyond both clips' strays, and each light's band clears the
+// previous light's seals by kCoverPixels again.
 constexpr float kCoverPixels = 1.0f / 16.0f;
 constexpr float kSealPixels = 2.0f * kCoverPixels;
 constexpr float kLightBandPixels = kCoverPixels + kSealPixels + kCoverPixels;
