@@ -50,7 +50,7 @@ namespace {
 // also holds what its 1/w changes over kCoverPixels along x plus along y (Level below): the
 // shim's guDrawTriangleWithClip clips it to the window and snaps the vertices it makes there to
 // 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
-// by up to 1/32 px of its gradient (measured: 2.8 codes at the right edge of
+// by up to 1/32 px of its gradient (measured: 1.8 to 2.8 codes at the right edge of
 // tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%), and the cover, clipped
 // the same way, by as much again. Receivers inside the window get none of it: on a receiver seen
 // edge-on it would let covers pass what lies close in front of it (with it on every receiver,
