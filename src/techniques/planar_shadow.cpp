@@ -209,20 +209,22 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
           const float area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
           if (area > largest && depth_plane(a, b, c, plane)) largest = area, has_plane = true;
         }
-        for (const GrVertex &v : receiver_screen) past_window = past_window || outside_window(v, scene);
+        for (const GrVertex &v : receiver_screen) {
+          past_window = past_window || outside_window(v, scene);
+        }
       }
       if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
       for (GrVertex &v : screen) {
         v.x = snap(v.x), v.y = snap(v.y);
         v.oow = static_cast<float>(plane.at(v.x, v.y));
       }
-      const float pixels = past_window ? 1.0f : 0.0f;
+      // The gradient's share only where the shim clipped the receiver to the window.
+      const float strays = past_window ? 1.0f : 0.0f;
       const Level cover = {band + (clipped ? kClippedCoverCodes : kCoverCodes),
-                           pixels * (static_cast<float>(l) * kLightBandPixels + kCoverPixels)};
+                           strays * (static_cast<float>(l) * kLightBandPixels + kCoverPixels)};
+      const Level seal = {cover.codes + kCoverSealCodes, cover.pixels + strays * kSealPixels};
       draw_at_level(screen, plane, cover, alpha, short_part, past_part);
-      draw_at_level(screen, plane,
-                    {cover.codes + kCoverSealCodes, cover.pixels + pixels * kSealPixels}, 0.0f,
-                    short_part, past_part);
+      draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
     }
   }
   set_scene_state();
