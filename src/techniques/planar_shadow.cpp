@@ -37,24 +37,36 @@ namespace {
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
 // Each light gets its own band above the previous one's seals, so its covers pass them.
-// The cover's margin is 2 codes (w times 1.0003): across a receiver triangle that spans much of
-// the screen the iteration of 1/w strays from the plane of its snapped vertices by more than a
-// code, and a margin of 1 left speckled holes in shadows near the camera (0.06 to 0.27% of the
-// receiver pixels, interior, on tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A
-// larger margin lets covers on a floor pass the feet of what stands on it, a pixel or two of
-// the contact line (4 codes: 5 pixels on a fighter's foot).
+// The cover's margin is 2 codes (w times 1.0003): a margin of 1 left speckled holes in shadows
+// near the camera (0.06 to 0.27% of the receiver pixels, interior, on
+// tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A larger margin lets covers on a
+// floor pass the feet of what stands on it, a pixel or two of the contact line (4 codes: 5
+// pixels on a fighter's foot).
 // Over a receiver the scene pass clipped through the camera it is 8 codes (w times 1.0014): the
-// scene pass drew that receiver as a fan of its clipped polygon, and on a floor seen at a grazing
-// angle from 0.3 m the hardware's iteration of 1/w across such a large (guard-band) triangle
-// strays from the plane of its vertices by up to 4 codes (tests/hard_cases/eye_near_plane.json).
-// An occluder closer to the receiver than 0.03% (0.14%) of its distance may let a cover show
-// through.
+// scene pass drew that receiver as a fan of its clipped polygon, whose triangles stray from the
+// plane of the largest by up to 4 codes on a floor seen at a grazing angle from 0.3 m
+// (tests/hard_cases/eye_near_plane.json).
+// Over a receiver triangle that reaches past the screen (guard band or camera-clipped) the margin
+// also holds what its 1/w changes over kCoverPixels along x plus along y (Level below): the
+// shim's guDrawTriangleWithClip clips it to the window and snaps the vertices it makes there to
+// 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
+// by up to 1/32 px of its gradient (measured: 1.8 to 2.8 codes at the right edge of
+// tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%), and the cover, clipped
+// the same way, by as much again. Receivers inside the window get none of it: on a receiver seen
+// edge-on it would let covers pass what lies close in front of it (with it on every receiver,
+// the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
+// An occluder closer to the receiver than 0.03% (0.14%) of its distance, plus that 1/16 px of its
+// gradient near the screen's edges, may let a cover show through.
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
 constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
-
-float nearer(float oow, float codes) { return oow * std::exp2(codes / 4096.0f); }
+// In pixels of the receiver's gradient, over receivers past the window only: the seal clears
+// later covers by kCoverPixels beyond both clips' strays, and each light's band clears the
+// previous light's seals by kCoverPixels again.
+constexpr float kCoverPixels = 1.0f / 16.0f;
+constexpr float kSealPixels = 2.0f * kCoverPixels;
+constexpr float kLightBandPixels = kCoverPixels + kSealPixels + kCoverPixels;
 
 // The Voodoo's 12.4 screen coordinates: what the rasteriser uses of a vertex's x and y.
 float snap(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
@@ -78,6 +90,66 @@ bool depth_plane(const GrVertex &p, const GrVertex &q, const GrVertex &r, DepthP
   return true;
 }
 
+// Whether the shim clips a triangle with this vertex to the screen (guDrawTriangleWithClip):
+// the rasteriser's clip window is the whole screen, and the shim tests the snapped vertex.
+bool outside_window(const GrVertex &v, const Scene &scene) {
+  const float x = snap(v.x), y = snap(v.y);
+  return !(x >= 0.0f && x < static_cast<float>(scene.width) && y >= 0.0f &&
+           y < static_cast<float>(scene.height));
+}
+
+// A depth level over a receiver: 1/w raised by `codes` W-buffer codes (a share of the depth)
+// plus what the receiver's depth changes over `pixels` pixels of screen along x and along y
+// (an absolute amount, so 1/w stays affine in screen space).
+struct Level {
+  float codes = 0.0f, pixels = 0.0f;
+};
+
+// Draws `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) at `level` above
+// that plane, at alpha `alpha`. Clip w counts near-plane distances (projection.cpp), so the
+// receiver's 1/w reaches 1 at the camera's near plane, and the W-buffer holds nothing nearer: the
+// shim clamps each vertex's 1/w to 1. A vertex pushed past 1 would lower the depth the whole
+// polygon iterates, so that its interior near the near plane kept a fraction of the margin
+// (tests/hard_cases/audit/y3: well under a code, 9 px from the near plane's line on the floor).
+// So the polygon is cut along the line on which its raised 1/w is 1 (1/w is affine in screen
+// space): the part short of it keeps the whole margin, the part past it (receiver depths within
+// the level of the near plane) is drawn at 1.
+void draw_at_level(const std::vector<GrVertex> &polygon, const DepthPlane &plane, Level level,
+                   float alpha, std::vector<GrVertex> &short_part,
+                   std::vector<GrVertex> &past_part) {
+  const float scale = std::exp2(level.codes / 4096.0f);
+  const float offset =
+      static_cast<float>((std::abs(plane.a) + std::abs(plane.b)) * level.pixels);
+  auto raise = [&](double oow) { return static_cast<float>(oow) * scale + offset; };
+  short_part.clear();
+  past_part.clear();
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    GrVertex a = polygon[i];
+    const GrVertex &b = polygon[(i + 1) % n];
+    const float da = raise(a.oow), db = raise(b.oow);
+    a.a = alpha;
+    a.oow = std::min(da, 1.0f);
+    if (da <= 1.0f) short_part.push_back(a);
+    if (da >= 1.0f) past_part.push_back(a);
+    if ((da < 1.0f) != (db < 1.0f) && da != 1.0f && db != 1.0f) {
+      // From the same end whichever way the edge is walked, so neighbours sharing it agree.
+      const bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+      const GrVertex &p = forward ? polygon[i] : b, &q = forward ? b : polygon[i];
+      const double dp = forward ? da : db, dq = forward ? db : da;
+      const double t = (1.0 - dp) / (dq - dp);  // where the raised 1/w is 1
+      GrVertex cut = a;
+      cut.x = snap(static_cast<float>(p.x + (q.x - p.x) * t));
+      cut.y = snap(static_cast<float>(p.y + (q.y - p.y) * t));
+      cut.oow = std::min(raise(plane.at(cut.x, cut.y)), 1.0f);
+      short_part.push_back(cut);
+      past_part.push_back(cut);
+    }
+  }
+  if (short_part.size() >= 3) draw_fan(short_part);
+  if (past_part.size() >= 3) draw_fan(past_part);
+}
+
 // Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
 // buffer, whose depth buffer holds the scene pass's surfaces.
 void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
@@ -94,7 +166,7 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
                        GR_BLEND_ZERO);
   std::vector<ClipVertex> polygon, receiver_polygon, scratch;
-  std::vector<GrVertex> screen, receiver_screen;
+  std::vector<GrVertex> screen, receiver_screen, short_part, past_part;
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
     const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
@@ -117,9 +189,13 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       bool has_plane = false;
       const bool clipped =
           (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) != 0;
+      bool past_window = false;
       if (!clipped) {
         has_plane =
             depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane);
+        for (unsigned index : {t.x, t.y, t.z}) {
+          past_window = past_window || outside_window(receiver.screen[index], scene);
+        }
       } else {
         receiver_polygon.clear();
         for (unsigned index : {t.x, t.y, t.z}) {
@@ -133,17 +209,22 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
           const float area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
           if (area > largest && depth_plane(a, b, c, plane)) largest = area, has_plane = true;
         }
+        for (const GrVertex &v : receiver_screen) {
+          past_window = past_window || outside_window(v, scene);
+        }
       }
       if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
       for (GrVertex &v : screen) {
         v.x = snap(v.x), v.y = snap(v.y);
         v.oow = static_cast<float>(plane.at(v.x, v.y));
       }
-      const float cover = band + (clipped ? kClippedCoverCodes : kCoverCodes);
-      for (GrVertex &v : screen) v.oow = nearer(v.oow, cover), v.a = alpha;
-      draw_fan(screen);
-      for (GrVertex &v : screen) v.oow = nearer(v.oow, kCoverSealCodes), v.a = 0.0f;
-      draw_fan(screen);
+      // The gradient's share only where the shim clipped the receiver to the window.
+      const float strays = past_window ? 1.0f : 0.0f;
+      const Level cover = {band + (clipped ? kClippedCoverCodes : kCoverCodes),
+                           strays * (static_cast<float>(l) * kLightBandPixels + kCoverPixels)};
+      const Level seal = {cover.codes + kCoverSealCodes, cover.pixels + strays * kSealPixels};
+      draw_at_level(screen, plane, cover, alpha, short_part, past_part);
+      draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
     }
   }
   set_scene_state();
