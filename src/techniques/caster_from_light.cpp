@@ -275,7 +275,7 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
 }
 
 // Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
-// mask) into the back buffer's corner or texture memory.
+// mask) into the back buffer's corner (the rest of the back buffer cleared) or texture memory.
 void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
                             const SurfaceMask *mask, const CasterDraw &draw) {
   // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
@@ -287,15 +287,22 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
     return;
   }
   const FxU32 side = static_cast<FxU32>(view.size);
-  grClipWindow(0, 0, side, side);
-  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
-  grDepthMask(FXFALSE);
+  // The clear, colour to 0 (and depth to the farthest W for a SurfaceMask), of the whole target:
+  // on the LFB path the whole back buffer, which step 4 clears again before anything reads it.
+  // llvmpipe fills a clear of the whole buffer tile by tile, where one clipped to the region is
+  // a quad drawn through a fragment program; the region's words are the same either way.
+  grClipWindow(0, 0, view.direct_path ? side : static_cast<FxU32>(scene.width),
+               view.direct_path ? side : static_cast<FxU32>(scene.height));
+  grDepthBufferMode(mask ? GR_DEPTHBUFFER_WBUFFER : GR_DEPTHBUFFER_DISABLE);
+  grDepthMask(mask ? FXTRUE : FXFALSE);
   grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, 0);
+  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
+  grClipWindow(0, 0, side, side);
   if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
+  grDepthMask(FXFALSE);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grConstantColorValue(kShadowRedArgb);
