@@ -56,19 +56,31 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
     bool facing;
     std::size_t walk;
   };
-  std::vector<EdgeWalk> walks;
-  walks.reserve(mesh.triangles.size() * 3);
+  // Filed under the edge's lower id (a counting sort), then each id's few walks sorted by edge.
+  std::vector<std::size_t> bucket_start(ids.size() + 1, 0);
+  for (const glm::uvec3 &t : mesh.triangles) {
+    for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      ++bucket_start[std::min(ids[end.first], ids[end.second]) + 1];
+    }
+  }
+  for (std::size_t id = 0; id < ids.size(); ++id) bucket_start[id + 1] += bucket_start[id];
+  std::vector<EdgeWalk> walks(bucket_start.back());
+  std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+  std::size_t walk = 0;
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
     const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
     for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
       const std::uint64_t low = std::min(ids[end.first], ids[end.second]);
       const std::uint64_t high = std::max(ids[end.first], ids[end.second]);
-      walks.push_back({low << 32 | high, facing, walks.size()});
+      walks[next[low]++] = {low << 32 | high, facing, walk++};
     }
   }
-  std::sort(walks.begin(), walks.end(),
-            [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
+  for (std::size_t id = 0; id < ids.size(); ++id) {
+    std::sort(walks.begin() + static_cast<std::ptrdiff_t>(bucket_start[id]),
+              walks.begin() + static_cast<std::ptrdiff_t>(bucket_start[id + 1]),
+              [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
+  }
   std::vector<bool> silhouette(walks.size(), false);
   for (std::size_t first = 0, end = 0; first < walks.size(); first = end) {
     int facing = 0;
