@@ -56,19 +56,31 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
     bool facing;
     std::size_t walk;
   };
-  std::vector<EdgeWalk> walks;
-  walks.reserve(mesh.triangles.size() * 3);
+  // Filed under the edge's lower id (a counting sort), then each id's few walks sorted by edge.
+  std::vector<std::size_t> bucket_start(ids.size() + 1, 0);
+  for (const glm::uvec3 &t : mesh.triangles) {
+    for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      ++bucket_start[std::min(ids[end.first], ids[end.second]) + 1];
+    }
+  }
+  for (std::size_t id = 0; id < ids.size(); ++id) bucket_start[id + 1] += bucket_start[id];
+  std::vector<EdgeWalk> walks(bucket_start.back());
+  std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+  std::size_t walk = 0;
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
     const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
     for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
       const std::uint64_t low = std::min(ids[end.first], ids[end.second]);
       const std::uint64_t high = std::max(ids[end.first], ids[end.second]);
-      walks.push_back({low << 32 | high, facing, walks.size()});
+      walks[next[low]++] = {low << 32 | high, facing, walk++};
     }
   }
-  std::sort(walks.begin(), walks.end(),
-            [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
+  for (std::size_t id = 0; id < ids.size(); ++id) {
+    std::sort(walks.begin() + static_cast<std::ptrdiff_t>(bucket_start[id]),
+              walks.begin() + static_cast<std::ptrdiff_t>(bucket_start[id + 1]),
+              [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
+  }
   std::vector<bool> silhouette(walks.size(), false);
   for (std::size_t first = 0, end = 0; first < walks.size(); first = end) {
     int facing = 0;
@@ -276,7 +288,7 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
 }
 
 // Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
-// mask) into the back buffer's corner or texture memory.
+// mask) into the back buffer's corner (the rest of the back buffer cleared) or texture memory.
 void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
                             const SurfaceMask *mask, const CasterDraw &draw) {
   // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
@@ -288,15 +300,22 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
     return;
   }
   const FxU32 side = static_cast<FxU32>(view.size);
-  grClipWindow(0, 0, side, side);
-  grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
-  grDepthMask(FXFALSE);
+  // The clear, colour to 0 (and depth to the farthest W for a SurfaceMask), of the whole target:
+  // on the LFB path the whole back buffer, which step 4 clears again before anything reads it.
+  // llvmpipe fills a clear of the whole buffer tile by tile, where one clipped to the region is
+  // a quad drawn through a fragment program; the region's words are the same either way.
+  grClipWindow(0, 0, view.direct_path ? side : static_cast<FxU32>(scene.width),
+               view.direct_path ? side : static_cast<FxU32>(scene.height));
+  grDepthBufferMode(mask ? GR_DEPTHBUFFER_WBUFFER : GR_DEPTHBUFFER_DISABLE);
+  grDepthMask(mask ? FXTRUE : FXFALSE);
   grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, 0);
+  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
+  grClipWindow(0, 0, side, side);
   if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
+  grDepthMask(FXFALSE);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grConstantColorValue(kShadowRedArgb);

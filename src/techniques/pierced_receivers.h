@@ -48,7 +48,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
                      const glm::vec3 &high, float tolerance, PiercedReceiver &pierced);
 
 // Step 1 for a non-planar pierced receiver (render_caster_from_light with a SurfaceMask, after
-// the clear): the receiver's triangles facing the light, clipped to the light's view, drawn into
+// its clear of colour and of depth to the farthest W): the receiver's triangles facing the light, clipped to the light's view, drawn into
 // the depth buffer only where the caster can draw (within a texel of view.covered's cells), and the depth test left at LESS with depth writes off, so the caster
 // draws only where it is nearer the light. Every vertex step 1 draws then takes its W from
 // depth_oow.

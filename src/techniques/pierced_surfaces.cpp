@@ -152,7 +152,6 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
   grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
   grDepthMask(FXTRUE);
   grDepthBufferFunction(GR_CMP_LESS);
-  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
   grColorMask(FXFALSE, FXFALSE);
   // Light clip space: beyond the caster's front (w >= caster_front), and the view's square a
   // little wider (so the edge of the texture is covered too). Step 3 never shades the part of a

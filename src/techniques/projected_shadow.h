@@ -139,7 +139,8 @@ struct ShadowJob {
 // drawn flat into one texture (565 red 11110b on 0, depth test off, back faces culled unless
 // the caster is an open mesh; only its part inside LightView::caster_planes, and with a
 // SurfaceMask only where it is nearer the light than that receiver's surface) in a
-// size x size region: the back buffer's top-left corner, or texture memory at
+// size x size region: the back buffer's top-left corner (the whole back buffer is cleared to 0,
+// and its depth too with a SurfaceMask), or texture memory at
 // `texture_address` on the direct path.
 // The Glide LOD of a size x size shadow texture (size a power of two, 1..256).
 inline GrLOD_t shadow_lod(int size) {

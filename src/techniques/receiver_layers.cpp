@@ -37,7 +37,13 @@ struct LayerTriangle {
   glm::vec3 inverse_w;         // 1 / w at a, b, c: linear in NDC
   bool faces_light = false;
   bool shaded = false;         // step 3 may shade it with the caster's shadow
+  float nearest_w = 0.0f;      // the least of its vertices' w: no point of it is nearer
 };
+
+// 1 / w interpolated with barycentric weights that are not negative and sum to 1 (both to a
+// few float ulps) gives a w no less than the least vertex w times this: a sample this much
+// nearer than every such triangle in its cell cannot be behind one (receiver_layers' skip).
+constexpr float kInterpolatedWMargin = 1.0f - 1e-4f;
 
 // Triangle indices per cell of the light's screen (kLayerGrid a side), in increasing order,
 // each cell's run at items[start[cell]] up to items[start[cell + 1]].
@@ -173,6 +179,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     return std::make_pair(grid.items.data() + grid.start[cell],
                           grid.items.data() + grid.start[cell + 1]);
   };
+  std::vector<float> cell_hiding;  // per grid cell, the nearest light-facing shaded triangle's w
   std::vector<const EdgeSample *> unresolved;  // outside and hidden, nothing lit behind found yet
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
@@ -182,6 +189,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     if (known != pierced.end() && known->planar) continue;  // clipped to its plane already
     triangles.clear();
     behind.clear();
+    float nearest_hiding = INFINITY;  // the least w of a light-facing, shaded triangle
     // Each vertex's light clip position, and its NDC once for all the triangles sharing it.
     receiver_view.resize(receiver.world.size());
     for (std::size_t i = 0; i < receiver_view.size(); ++i) {
@@ -207,7 +215,8 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       lt.faces_light = glm::dot(glm::cross(b - a, c - a), view.position - a) > 0.0f;
       // Wholly behind every sample: it can only be a lit layer behind one (looked at below, if
       // some sample needs it).
-      if (std::min(va.w, std::min(vb.w, vc.w)) > farthest_sample + tolerance) {
+      lt.nearest_w = std::min(va.w, std::min(vb.w, vc.w));
+      if (lt.nearest_w > farthest_sample + tolerance) {
         if (lt.faces_light) behind.push_back(lt);
         continue;
       }
@@ -221,12 +230,27 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
         }
       }
       triangles.push_back(lt);
+      if (lt.faces_light && lt.shaded) nearest_hiding = std::min(nearest_hiding, lt.nearest_w);
     }
-    if (triangles.empty()) continue;
+    // A sample can only be hidden behind a light-facing, shaded triangle more than `tolerance`
+    // nearer than it: per cell of the grid, the nearest such triangle's least w; a receiver
+    // with none nearer than the farthest sample, and a sample with none in its cell nearer
+    // than itself, are skipped (neither can give `hides` or `between`).
+    if (!(nearest_hiding * kInterpolatedWMargin < farthest_sample - tolerance)) continue;
     bucket_layer_triangles(triangles, sample_low, sample_high, grid);
+    cell_hiding.assign(grid.start.size() - 1, INFINITY);
+    for (std::size_t cell = 0; cell + 1 < grid.start.size(); ++cell) {
+      for (std::size_t k = grid.start[cell]; k < grid.start[cell + 1]; ++k) {
+        const LayerTriangle &lt = triangles[grid.items[k]];
+        if (lt.faces_light && lt.shaded) cell_hiding[cell] = std::min(cell_hiding[cell], lt.nearest_w);
+      }
+    }
     bool hides = false, between = false;
     unresolved.clear();
     for (const EdgeSample &s : samples) {
+      const std::size_t cell =
+          static_cast<std::size_t>(layer_cell_of(s.ndc.y) * kLayerGrid + layer_cell_of(s.ndc.x));
+      if (!(cell_hiding[cell] * kInterpolatedWMargin < s.w - tolerance)) continue;
       float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
       bool front_faces_light = false, hidden = false, lit_behind = false;
       const auto [first, last] = cell_at(s.ndc);
