@@ -82,7 +82,7 @@ struct PipelineKey {
 PipelineKey pipeline_key(const GlideContext &context, bool fast);
 bool reads_texture(const ColorPathState &path);
 
-std::string vertex_shader_source();
+std::string vertex_shader_source(bool fast);  // fast: for PipelineKey::fast programs
 std::string fragment_shader_source(const PipelineKey &key);
 
 // The run-time half of a combine unit, as 0/1 selectors (exact in float arithmetic):
