@@ -4,7 +4,8 @@
 // shim_workloads.h), frames of the fighter demo without shadows and with projected shadows on
 // both paths, every figure of the articles, and the one-feature programs of tests/sdk (fog,
 // LFB formats and pipeline, antialiasing, mip-mapping, palettes, .3df, the gu texture manager),
-// whose dumped frames are compared as files. A fast path that changed one byte would not be a
+// whose dumped frames are compared as files, and dithered lines, points and slivers in both
+// origins (the fast dither's row source). A fast path that changed one byte would not be a
 // fast path but a fidelity knob, off by default (docs/environment.md).
 #include "context.h"
 #include "figures/figures.h"
@@ -160,6 +161,48 @@ TEST(ShimBenchStream, FastPathsGiveTheExactBytes) {
   const Buffers exact = render(true, GR_BUFFER_BACKBUFFER, draw);
   expect_drawn(exact, "stream");
   expect_same(fast, exact, "stream");
+}
+
+// The fast dither takes a pixel's row from an interpolated varying, except for lines, whose
+// varyings change only along the line. Dithered mid-range colours, in both origins: lines with
+// integer and half-integer ends at several slopes, points, and slivers a fraction of a pixel
+// wide, each drawn twice so the second draw runs the state's compiled-in program.
+TEST(DitheredPrimitives, FastPathsGiveTheExactBytes) {
+  auto vertex = [](float x, float y, float shade) {
+    GrVertex v{};
+    v.x = x, v.y = y, v.oow = 1.0f;
+    v.r = 37.0f + shade, v.g = 90.0f + shade * 0.5f, v.b = 150.0f - shade;
+    return v;
+  };
+  auto draw = [&] {
+    grDitherMode(GR_DITHER_4x4);
+    guColorCombineFunction(GR_COLORCOMBINE_ITRGB);
+    for (int pass = 0; pass < 4; ++pass) {
+      grSstOrigin(pass < 2 ? GR_ORIGIN_UPPER_LEFT : GR_ORIGIN_LOWER_LEFT);
+      const float top = pass < 2 ? 10.0f : 250.0f;
+      for (int i = 0; i < 24; ++i) {
+        const float k = static_cast<float>(i);
+        const float y = top + k * 4.0f + (i % 2 == 0 ? 0.0f : 0.5f);
+        const GrVertex a = vertex(10.0f, y, 2.0f * k);
+        const GrVertex b = vertex(300.0f, y + static_cast<float>(i % 3) * 9.0f, 90.0f);
+        grDrawLine(&a, &b);
+        const GrVertex c = vertex(320.0f + 8.0f * k, top, 3.0f * k);
+        const GrVertex d = vertex(330.0f + 8.0f * k, top + 90.0f, 60.0f);
+        grDrawLine(&c, &d);
+        const GrVertex p = vertex(500.0f + 0.25f * k, y + 0.3f, 5.0f * k);
+        grDrawPoint(&p);
+        const GrVertex s0 = vertex(520.0f, y, 0.0f), s2 = vertex(520.0f, y + 0.125f, 50.0f);
+        const GrVertex s1 = vertex(630.0f, y + 0.0625f * (k + 1.0f), 100.0f);
+        grDrawTriangle(&s0, &s1, &s2);
+      }
+    }
+  };
+  const Buffers fast = render(false, GR_BUFFER_BACKBUFFER, draw);
+  const Buffers exact = render(true, GR_BUFFER_BACKBUFFER, draw);
+  std::size_t drawn = 0;
+  for (FxU16 word : exact.color) drawn += word != 0;
+  EXPECT_GT(drawn, 5000u) << "too little drawn for the comparison to mean something";
+  expect_same(fast, exact, "dithered lines, points and slivers");
 }
 
 // demo_bench's three frames: no shadows, projected shadows through the LFB, and through texture

@@ -93,7 +93,7 @@ unsigned GlRenderer::bias_mark_program() {
   if (bias_mark_program_ != 0) return bias_mark_program_;
   const GlFunctions &gl = backend_->gl;
   std::string error;
-  const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(), error);
+  const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(false), error);
   const unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, R"(#version 120
 uniform float u_depth;  // GL window depth of the interval's end
 void main() {

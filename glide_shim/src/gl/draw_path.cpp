@@ -188,6 +188,7 @@ void GlRenderer::flush() {
   if (queue_.empty()) return;
   const GlFunctions &gl = backend_->gl;
   PipelineKey key = pipeline_key(context_, context_.fast_paths);
+  key.line_rows = key.fast && key.dither != GR_DITHER_DISABLE && primitive_ == Primitive::Lines;
   std::string name = key.defines();  // the program cache's key, made once per flush
   if (key.sources && programs_.count(name) == 0 && ++states_seen_[name] < 2) {
     key = key.without_sources();  // compiled in once the state is drawn again

@@ -134,7 +134,7 @@ std::string PipelineKey::defines() const {
     << " itrgb " << alpha_controls_itrgb << " chroma " << chroma_key << " alpha_test " << alpha_test << " blend " << blending
     << " dither " << dither << " fog " << fog;
   if (plain != 0) s << " plain " << plain;
-  if (fast) s << " fast " << texel_fetch << rows_mod4;
+  if (fast) s << " fast " << texel_fetch << rows_mod4 << line_rows;
   if (sources) {
     s << " sources " << color_local << color_other << color_invert
       << alpha_local << alpha_other << alpha_invert << tmu_rgb_invert << tmu_alpha_invert;

@@ -41,13 +41,15 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key, const std::
 
   const GlFunctions &gl = backend_->gl;
   std::string error;
-  const unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(), error);
+  unsigned vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(key.fast), error);
   unsigned fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(key), error) : 0;
-  if (vs != 0 && fs == 0 && key.fast) {
+  if (fs == 0 && key.fast) {
     // A context without GLSL 1.30 gets the exact program under the fast key: the same bytes.
+    if (vs) gl.glDeleteShader(vs);
     PipelineKey exact = key.without_sources();
     exact.fast = exact.texel_fetch = false;
-    fs = compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(exact), error);
+    vs = compile(gl, GL_VERTEX_SHADER, vertex_shader_source(false), error);
+    fs = vs ? compile(gl, GL_FRAGMENT_SHADER, fragment_shader_source(exact), error) : 0;
   }
   if (fs == 0) {
     if (vs) gl.glDeleteShader(vs);

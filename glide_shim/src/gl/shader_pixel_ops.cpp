@@ -66,25 +66,34 @@ float fog_table_blend() {
 )";
 
 // The fast paths' 565 write with the hardware's dither, in integers (GLSL 1.30). The matrix
-// entry d from the pixel's column x and its row from the top y, low two bits only: y is
-// height - 1 - row from the bottom, and (height - 1 - r) & 3 = (~r + (height & 3)) & 3, with
-// height & 3 compiled in. The 4x4 matrix is the bit interleave 8 (x0 ^ y0) + 4 y0 + 2 (x1 ^ y1)
-// + y1, the 2x2 one 2 + 8 (x0 ^ y0) + 4 y0: dither_entry_code's table without the selects. Then
+// entry d from the pixel's column x and its row from the top y, low two bits only. y comes from
+// the vertex shader's v_row, the row from the target's top plus 0.5 at a pixel centre (its
+// interpolation error, far below 0.5 for coordinates up to 32768, cannot move it to another
+// row): gl_FragCoord.y costs llvmpipe's origin transform, a per-pixel gather of a uniform, about
+// a fifth of a Gouraud pixel's instructions. Lines (line_rows) keep gl_FragCoord.y: a line's
+// v_row is its own y, flat across it (tests/image/fast_paths_test.cpp, DitheredPrimitives).
+// The 4x4 matrix is the bit interleave 8 (x0 ^ y0) + 4 y0 + 2 (x1 ^ y1) + y1, the 2x2 one
+// 2 + 8 (x0 ^ y0) + 4 y0: dither_entry_code's table without the selects. Then
 // (c << 1) - (c >> 4) + (c >> 7) + d) >> 4 per channel (<< 2 and >> 6 for green), the exact
-// path's floors on the integers 0..255 that rgb holds.
-std::string fast_dither_code(GrDitherMode_t dither, int rows_mod4) {
-  std::string s =
-      "  ivec2 dither_p = ivec2(gl_FragCoord.xy);\n"
-      "  int dither_y = ~dither_p.y";
-  if (rows_mod4 != 0) s += " + " + std::to_string(rows_mod4);
-  s += ";\n  int dither_a = dither_p.x ^ dither_y;\n";
-  if (dither == GR_DITHER_2x2) {
-    s += "  int d = 2 | ((dither_a & 1) << 3) | ((dither_y & 1) << 2);\n";
+// path's floors on the integers 0..255 that rgb holds (or on the clamped, unfloored iterated
+// colour, whose truncation is its floor).
+std::string fast_dither_code(GrDitherMode_t dither, const char *rgb, bool line_rows,
+                             int rows_mod4) {
+  std::string s;
+  if (line_rows) {  // (height - 1 - r) & 3 = (~r + (height & 3)) & 3, r the row from the bottom
+    s = "  ivec2 dither_p = ivec2(gl_FragCoord.x, ~int(gl_FragCoord.y) + " +
+        std::to_string(rows_mod4) + ");\n";
   } else {
-    s += "  int d = ((dither_a & 1) << 3) | ((dither_y & 1) << 2) | (dither_a & 2) |"
-         " ((dither_y >> 1) & 1);\n";
+    s = "  ivec2 dither_p = ivec2(gl_FragCoord.x, v_row);\n";
   }
-  s += "  ivec3 c = ivec3(rgb);\n"
+  s += "  int dither_a = dither_p.x ^ dither_p.y;\n";
+  if (dither == GR_DITHER_2x2) {
+    s += "  int d = 2 | ((dither_a & 1) << 3) | ((dither_p.y & 1) << 2);\n";
+  } else {
+    s += "  int d = ((dither_a & 1) << 3) | ((dither_p.y & 1) << 2) | (dither_a & 2) |"
+         " ((dither_p.y >> 1) & 1);\n";
+  }
+  s += std::string("  ivec3 c = ivec3(") + rgb + ");\n"
        "  vec3 q = vec3(((c << ivec3(1, 2, 1)) - (c >> 4) + (c >> ivec3(7, 6, 7)) + d) >> 4);\n";
   return s;
 }

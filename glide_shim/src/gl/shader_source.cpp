@@ -28,6 +28,7 @@ uniform float u_screen_height;
 varying vec4 v_color;       // iterated RGBA, 0..255, screen-linear like the hardware iterators
 varying vec3 v_stq;         // sow, tow and their divisor, screen-linear
 varying float v_fog;        // 1/w or ooz for fog, screen-linear like the hardware's iterators
+varying float v_row;        // rows from the target's top, row + 0.5 at a pixel centre
 uniform vec3 u_fog_color;   // RGB 0..255
 uniform vec2 u_fog_flags;   // MULT2, ADD2 as 0/1
 uniform vec2 u_fog_table[64];  // per entry: fog blend, and the hardware's delta byte
@@ -41,13 +42,30 @@ float wrap_index(float i, float size) { return mod(i, size); }
 
 )";
 
+// The fast paths' colour that reaches the 565 write is the iterated colour itself (the SDK's
+// Gouraud state: colour combine LOCAL of the iterated RGB, nothing after it changes it). Its
+// integer conversion can then truncate it_clamped (0..255), which is the same as flooring it.
+bool rgb_is_iterated(const PipelineKey &key) {
+  return key.sources && (key.plain & kPlainIterators) == 0 &&
+         key.color.function == GR_COMBINE_FUNCTION_LOCAL && key.color_local == 0 &&
+         !key.color_invert && !key.alpha_controls_itrgb && key.fog == GR_FOG_DISABLE;
+}
+
 }  // namespace
 
 using namespace shader_stages;
 
-std::string vertex_shader_source() {
-  return R"(#version 120
-attribute vec2 a_position;  // screen pixels in the Glide origin
+// The fast programs' vertex shader (GLSL 1.30) also hands the TMU's one level on as a flat
+// varying: a uniform read in llvmpipe's fragment code is a bounds-checked gather per pixel
+// (about 20 instructions a component for 8 pixels), in its vertex code one load.
+std::string vertex_shader_source(bool fast) {
+  std::string s = fast ? R"(#version 130
+uniform vec4 u_level;        // as in the fragment shader's prelude
+uniform float u_level_scale;
+uniform vec2 u_lod_range;
+flat out vec4 v_level_flat;  // u_level.yz (width, height), u_level_scale, u_lod_range.x
+)" : "#version 120\n";
+  s += R"(attribute vec2 a_position;  // screen pixels in the Glide origin
 attribute float a_depth;    // GL window depth, 0..1
 attribute vec4 a_color;     // 0..255
 attribute vec3 a_stq;       // sow, tow, divisor
@@ -57,15 +75,19 @@ uniform float u_y_down;     // 1 when the origin is the upper-left corner
 varying vec4 v_color;
 varying vec3 v_stq;
 varying float v_fog;
+varying float v_row;  // rows from the target's top, row + 0.5 at a pixel centre (fast dither)
 void main() {
   vec2 ndc = a_position * 2.0 / u_screen - 1.0;
   if (u_y_down > 0.5) ndc.y = -ndc.y;
   gl_Position = vec4(ndc, a_depth * 2.0 - 1.0, 1.0);
+  // Exact: a snapped y (a multiple of 1/16, |y| <= 32768) and height - y are floats.
+  v_row = u_y_down > 0.5 ? a_position.y : u_screen.y - a_position.y;
   v_color = a_color;
   v_stq = a_stq;
   v_fog = a_fog;
-}
 )";
+  if (fast) s += "  v_level_flat = vec4(u_level.yz, u_level_scale, u_lod_range.x);\n";
+  return s + "}\n";
 }
 
 std::string fragment_shader_source(const PipelineKey &key) {
@@ -78,10 +100,17 @@ std::string fragment_shader_source(const PipelineKey &key) {
 
   if (key.fog == GR_FOG_WITH_TABLE) s << kFogTableFunctions;
 
-  s << "void main() {\n"
-       << ((key.plain & kPlainIterators) != 0
-               ? "  vec4 it = v_color;  // fidelity knob `iterators`: GL's interpolation\n"
-               : "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n");
+  s << "void main() {\n";
+  if ((key.plain & kPlainIterators) != 0) {
+    s << "  vec4 it = v_color;  // fidelity knob `iterators`: GL's interpolation\n";
+  } else if (key.fast) {
+    // The same values as the exact path's clamp(floor(x)), which the clamp passes through
+    // unchanged, NaN included; the unfloored copy lets an integer conversion do the floor.
+    s << "  vec4 it_clamped = clamp(v_color + 1.0 / 1024.0, 0.0, 255.0);\n"
+         "  vec4 it = floor(it_clamped);  // iterators truncate\n";
+  } else {
+    s << "  vec4 it = clamp(floor(v_color + 1.0 / 1024.0), 0.0, 255.0);  // iterators truncate\n";
+  }
   if (key.texture) {
     s << "  float tex_lod;\n"
          "  vec4 texel = sample_tmu(tex_lod);\n"
@@ -147,7 +176,8 @@ std::string fragment_shader_source(const PipelineKey &key) {
     if (key.dither == GR_DITHER_DISABLE) {
       s << "  vec3 q = floor(rgb / vec3(8.0, 4.0, 8.0));  // dither off: plain truncation\n";
     } else if (key.fast) {
-      s << fast_dither_code(key.dither, key.rows_mod4);
+      s << fast_dither_code(key.dither, rgb_is_iterated(key) ? "it_clamped.rgb" : "rgb",
+                            key.line_rows, key.rows_mod4);
     } else {
       // The hardware's dither: matrix entry d by frame-buffer row (from the top) and column.
       s << "  vec2 cell = mod(vec2(floor(gl_FragCoord.x), u_screen_height - 1.0 -"

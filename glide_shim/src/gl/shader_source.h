@@ -51,8 +51,9 @@ struct PipelineKey {
   // exact path's bytes for less work per pixel. The combine units' sources and invert flags are
   // compiled in (below) instead of selected by 0/1 uniforms; the alpha combine is left out when
   // nothing can observe its result (no alpha test, no blending: a 565 buffer stores no alpha);
-  // the dither matrix entry comes from integer arithmetic on gl_FragCoord, and texels from
-  // texelFetch (GLSL 1.30). Off, the program is the exact path's, unchanged.
+  // the dither matrix entry comes from integer arithmetic on the pixel's column and its row from
+  // the top (a varying, not gl_FragCoord.y, except for lines), and texels from texelFetch
+  // (GLSL 1.30). Off, the program is the exact path's, unchanged.
   bool fast = false;
   bool texel_fetch = false;  // fast, and the TMU has a source (texelFetch of a real texture)
   // Fast, with the sources below compiled in. A state sweep (a test of every combine setting)
@@ -60,6 +61,10 @@ struct PipelineKey {
   // drawn a second time; the first time the sources stay uniforms (without_sources()).
   bool sources = false;
   int rows_mod4 = 0;         // fast dither: the target's height & 3
+  // Fast dither of lines: the row from gl_FragCoord.y. A line's varyings change only along it,
+  // so v_row there is the line's own y, not the pixel's row (set by the renderer, which knows
+  // the primitive).
+  bool line_rows = false;
   // Compiled-in sources, as unit_uniforms selects them (fast only; zero otherwise):
   // local 1 = constant, other 0/1/2 = iterated/texture/constant.
   int color_local = 0, color_other = 0, alpha_local = 0, alpha_other = 0;
@@ -77,7 +82,7 @@ struct PipelineKey {
 PipelineKey pipeline_key(const GlideContext &context, bool fast);
 bool reads_texture(const ColorPathState &path);
 
-std::string vertex_shader_source();
+std::string vertex_shader_source(bool fast);  // fast: for PipelineKey::fast programs
 std::string fragment_shader_source(const PipelineKey &key);
 
 // The run-time half of a combine unit, as 0/1 selectors (exact in float arithmetic):

@@ -32,7 +32,10 @@ const char *fast_other(int other, bool rgb);
 const char *glsl_compare(GrCmpFnc_t function);
 std::string fog_code(GrFogMode_t source);
 extern const char *kFogTableFunctions;
-std::string fast_dither_code(GrDitherMode_t dither, int rows_mod4);
+// `rgb` names the combined colour (0..255; an integer conversion truncates it); line_rows: the
+// row from gl_FragCoord.y (rows_mod4: the target's height & 3), not from v_row.
+std::string fast_dither_code(GrDitherMode_t dither, const char *rgb, bool line_rows,
+                             int rows_mod4);
 
 }  // namespace shader_stages
 }  // namespace glide_shim
