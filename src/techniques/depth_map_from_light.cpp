@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,11 @@ LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotL
   LightFrustum frustum;
   const std::string name = "light " + std::to_string(index);
   if (!(light.cone_degrees > 0.0f && light.cone_degrees < kWidestCone)) {
-    frustum.problem = name + ": a cone of " + std::to_string(light.cone_degrees) +
-                      " degrees has no depth-map frustum (it must be under " +
-                      std::to_string(kWidestCone) + "), so the light casts no shadow";
+    char cone[96];
+    std::snprintf(cone, sizeof cone,
+                  "a cone of %g degrees has no depth-map frustum (it must be under %g)",
+                  static_cast<double>(light.cone_degrees), static_cast<double>(kWidestCone));
+    frustum.problem = name + ": " + cone + ", so the light casts no shadow";
     return frustum;
   }
   const glm::vec3 axis = light.target - light.position;

@@ -69,10 +69,13 @@ TEST(HardCases, ClosedBoxAroundTheLightDarkensEverythingOutside) {
   }
 }
 
-// The depth map on the same two places: 1.9% and 16.5% interior false light, reported as success
-// (a wedge of the floor at the cone's rim falls outside the map's frustum of directions, which
-// depth_map_from_light.cpp fits to the casters inside the beam). The depth map belongs to another
-// change; enable this when its frustum holds a caster around the light.
+// The depth map on the same two places: 1.2% and 10.1% interior false light (of the frame's
+// receiver pixels), reported as success. The map's frustum holds the whole cone; the box's faces
+// a few centimetres from the light are seen almost edge-on from it, and the slope-scaled polygon
+// offset (--bias-slope, 2 by default) pushes them back past the floor: slope 0.5 gives 0.000%
+// on both, slope 1 0.079% and 0.000%, but slope 1 brings back the acne on tilted plates the
+// default of 2 was chosen against (docs/hard_cases_results.md, "Second audit"). Enable this when
+// the depth map bounds the offset where it would carry a caster past what lies behind it.
 TEST(HardCases, DISABLED_ClosedBoxAroundTheLightMovedDepthMap) {
   for (const glm::vec3 &offset : kCageOffsets) {
     expect_these_right_or_refused("k1, the light moved inside the box", cage_with_light_moved(offset),
