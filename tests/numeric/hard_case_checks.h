@@ -174,13 +174,16 @@ inline Unlit shadow_where_unlit(const Outcome &o, const Truth &truth, int width,
 // what it cannot shadow (`refusals`: technique -> a part of the message) and casts nothing from it.
 inline constexpr double kInteriorBudget = 0.001;
 
-// `scene` as loaded from `file` (or varied from it; `file` names it in the messages).
-inline void expect_right_or_refused(const std::string &file, const gs::Scene &scene,
-                                    const std::map<std::string, std::string> &refusals = {},
-                                    bool only_in_beam = true) {
+// The techniques of `names` on `scene` as loaded from `file` (or varied from it; `file` names
+// it in the messages). only_in_beam off for scenes of several lights (shadow_where_unlit asks
+// light 0 alone).
+inline void expect_these_right_or_refused(const std::string &file, const gs::Scene &scene,
+                                          const std::vector<std::string> &names,
+                                          const std::map<std::string, std::string> &refusals,
+                                          bool only_in_beam) {
   const Truth truth = truth_of(scene);
   ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
-  for (const std::string &name : kTechniques) {
+  for (const std::string &name : names) {
     const Outcome o = run(name, scene, truth);
     report(file + " " + name, o);
     expect_clean_glide(name, o);
@@ -198,6 +201,13 @@ inline void expect_right_or_refused(const std::string &file, const gs::Scene &sc
           << file << " " << name << ": shadow where the light does not shine";
     }
   }
+}
+
+// Every technique on `scene`.
+inline void expect_right_or_refused(const std::string &file, const gs::Scene &scene,
+                                    const std::map<std::string, std::string> &refusals = {},
+                                    bool only_in_beam = true) {
+  expect_these_right_or_refused(file, scene, kTechniques, refusals, only_in_beam);
 }
 
 

@@ -17,35 +17,6 @@ using namespace hard_cases;  // the checks of hard_case_checks.h
 
 namespace {
 
-// Every technique of `names` right or refused by name on `scene`, as expect_right_or_refused
-// checks all of them; only_in_beam off for scenes of several lights (shadow_where_unlit asks
-// light 0 alone).
-void expect_these_right_or_refused(const std::string &file, const gs::Scene &scene,
-                                   const std::vector<std::string> &names,
-                                   const std::map<std::string, std::string> &refusals,
-                                   bool only_in_beam) {
-  const Truth truth = truth_of(scene);
-  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
-  for (const std::string &name : names) {
-    const Outcome o = run(name, scene, truth);
-    report(file + " " + name, o);
-    expect_clean_glide(name, o);
-    const auto refused = refusals.find(name);
-    if (refused != refusals.end()) {
-      ASSERT_FALSE(o.refusals.empty()) << file << " " << name << ": should refuse, not pass";
-      EXPECT_NE(o.refusals[0].find(refused->second), std::string::npos) << o.refusals[0];
-      continue;
-    }
-    for (const std::string &e : o.refusals) ADD_FAILURE() << file << " " << name << ": " << e;
-    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-        << file << " " << name;
-    if (only_in_beam) {
-      EXPECT_LE(shadow_where_unlit(o, truth, scene.width, scene.height).farthest, 1)
-          << file << " " << name << ": shadow where the light does not shine";
-    }
-  }
-}
-
 const std::map<std::string, std::string> kCageRefusals = {
     {"projected", "light 0 and 'cage': no single projection"},
     {"projected-chroma", "light 0 and 'cage': no single projection"}};
