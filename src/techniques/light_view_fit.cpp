@@ -216,6 +216,15 @@ std::vector<LightView> split_into_textures(const LightView &view) {
   if (view.size <= kLargest) return {view};
   const int tiles = view.size / kLargest;  // per side
   std::vector<LightView> parts;
+  // The whole map's seams as light view space planes: x_ndc >= c, with c = -1 + 2 k / tiles
+  // exact in binary, is (1, 0, 0, -c) in clip space; the neighbour keeps its negation.
+  const glm::mat4 to_view = glm::transpose(view.projection);
+  auto seam = [&](int axis, int k, float side) {
+    glm::vec4 clip_plane(0.0f);
+    clip_plane[axis] = side;
+    clip_plane.w = -side * (-1.0f + 2.0f * static_cast<float>(k) / static_cast<float>(tiles));
+    return to_view * clip_plane;
+  };
   for (int ty = 0; ty < tiles; ++ty) {
     for (int tx = 0; tx < tiles; ++tx) {
       // Light clip space remapped so this tile's square of NDC becomes [-1, 1]^2 (rows from the
@@ -227,7 +236,14 @@ std::vector<LightView> split_into_textures(const LightView &view) {
       LightView part = view;
       part.projection = remap * view.projection;
       part.size = kLargest;
-      part.clip_to_view = true;
+      // Columns' seams first, then rows': in a 2x2 split (a 512 map, the largest) two tiles
+      // sharing a row seam share their column, so both cut the same pieces. The outer sides
+      // need no cut: the clean border lies beyond them.
+      if (tx > 0) part.tile_planes.push_back(seam(0, tx, 1.0f));
+      if (tx + 1 < tiles) part.tile_planes.push_back(seam(0, tx + 1, -1.0f));
+      // Texture row ty holds NDC y from 1 - 2 ty / tiles down to 1 - 2 (ty + 1) / tiles.
+      if (ty > 0) part.tile_planes.push_back(seam(1, tiles - ty, -1.0f));
+      if (ty + 1 < tiles) part.tile_planes.push_back(seam(1, tiles - ty - 1, 1.0f));
       parts.push_back(part);
     }
   }

@@ -51,7 +51,10 @@ struct LightView {
   float caster_front = 0.0f;        // light-view distance to the caster's nearest bound
   float caster_distance = 0.0f;     // light to the caster's centre
   int size = 256;                   // texels of this texture
-  bool clip_to_view = false;        // a tile of a larger map: receivers are clipped to its part
+  // A tile of a larger map: the light view space planes of its seams with its neighbours, which
+  // step 3 clips receivers to. Taken from the whole map's projection, so a neighbour's plane is
+  // this one negated to the bit and both cut a receiver at the very same points (no crack).
+  std::vector<glm::vec4> tile_planes;
   bool surrounds_light = false;     // a closed caster around the light: drawn from both sides
   bool direct_path = false;         // the path step 1 took (the LFB path needs the region to fit
                                     // in the back buffer; a larger one goes direct)

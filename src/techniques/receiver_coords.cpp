@@ -194,13 +194,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
   // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
   std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
-  if (view.clip_to_view) {
-    // A tile's sides as light-view planes: a clip-space plane p is transpose(P) p in view space.
-    for (const glm::vec4 &side : {glm::vec4(-1, 0, 0, 1), glm::vec4(1, 0, 0, 1),
-                                  glm::vec4(0, -1, 0, 1), glm::vec4(0, 1, 0, 1)}) {
-      view_planes.push_back(glm::transpose(view.projection) * side);
-    }
-  }
+  view_planes.insert(view_planes.end(), view.tile_planes.begin(), view.tile_planes.end());
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
   const glm::mat4 world_from_view = glm::inverse(view.view);
   std::vector<std::vector<glm::vec4>> beam_regions;
@@ -259,7 +253,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const bool in_front = (any_outside & 0x10) != 0;
       const bool beyond_beam = (any_outside & 0x20) != 0;
       const bool needs_clip =
-          in_front || beyond_beam || (view.clip_to_view && (any_outside & 0xF) != 0);
+          in_front || beyond_beam || (!view.tile_planes.empty() && (any_outside & 0xF) != 0);
       if (!needs_clip) {
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         if (!sees_caster(view, corners, 3)) continue;
