@@ -46,9 +46,9 @@ TEST(HardCases, ClosedBoxAroundTheLightDarkensEverythingOutside) {
 // 10.1%, 1.15% and 1.69% interior false light (of the frame's receiver pixels) reported as
 // success before the slope term was bounded. The box's faces a few centimetres from the light
 // are seen almost edge-on from it through texels 10 degrees wide, and glPolygonOffset's slope
-// term pushed them back past the floor. With the push bounded to a tenth of each point's depth
-// from the light (TechniqueOptions::depth_bias_bound) they are within the budget; unbounded, the
-// first place still fails, so the check sees the fault.
+// term pushed them back past the floor. With the push bounded to 0.3 of each point's depth from
+// the light (TechniqueOptions::depth_bias_bound) they are within the budget; unbounded, the
+// second place still fails, so the check sees the fault.
 TEST(HardCases, ClosedBoxAroundTheLightMovedDepthMap) {
   for (const glm::vec3 &offset : {kCageOffsets[0], kCageOffsets[1], glm::vec3(-0.3f, 0.45f, -0.5f),
                                   glm::vec3(0.55f, 0.0f, 0.0f)}) {
