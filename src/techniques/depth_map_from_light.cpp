@@ -123,6 +123,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
                        "-bit depth maps do not exist (16 or 24); using 24");
   }
+  // The bound is a share of the depth: below 0 (or NaN) the slid copy would come nearer the light
+  // than the caster and shadow what it lights, so such a value leaves the slope term unbounded.
+  const bool bounded = std::isfinite(options_.depth_bias_bound) && options_.depth_bias_bound >= 0.0f;
+  if (!bounded && !std::isinf(options_.depth_bias_bound)) {
+    warnings.push_back("depth-map: a slope bound of " + std::to_string(options_.depth_bias_bound) +
+                       " is not a share of the depth (0 or more); the slope term is unbounded");
+  }
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     maps_.push_back(0);
     if (scene_.lights[light].is_projector()) {  // slides cast no shadows: no map, gate open
@@ -211,7 +218,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       // face is carried back by more than that share of its depth: a face the light sees almost
       // edge-on spans much of its depth in one coarse texel, and its slope term alone passed the
       // receiver behind it (y6, k1 with the light moved: 1 to 16% false light).
-      if (std::isfinite(options_.depth_bias_bound)) {
+      if (bounded) {
         const glm::vec3 &origin = scene_.lights[light].position;  // world
         slid.clear();
         for (const glm::vec3 &p : positions)

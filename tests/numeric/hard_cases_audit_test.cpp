@@ -65,6 +65,14 @@ TEST(HardCases, ClosedBoxAroundTheLightMovedDepthMap) {
   const Outcome o = run("depth-map", scene, truth_of(scene), unbounded);
   report("k1, the light moved, depth-map unbounded", o);
   EXPECT_GT(o.errors.false_light_interior, 0.05);  // a share: 16% measured
+  // A bound below 0 would slide the copy nearer the light than the caster: refused with a
+  // warning, and the frame drawn unbounded (the same fault).
+  gs::TechniqueOptions negative;
+  negative.depth_bias_bound = -0.5f;
+  const Outcome refused = run("depth-map", scene, truth_of(scene), negative);
+  ASSERT_FALSE(refused.warnings.empty());
+  EXPECT_NE(refused.warnings[0].find("slope bound of -0.5"), std::string::npos) << refused.warnings[0];
+  EXPECT_GT(refused.errors.false_light_interior, 0.05);
 }
 
 // y6: the light moved inside an open tube (a 170-degree cone, 128 texels): the tube's walls, seen
