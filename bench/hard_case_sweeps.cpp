@@ -243,15 +243,27 @@ bool classes() {
 // acne scenes of issue 14, the lone plane at grazing angles, the box resting on the floor, the
 // spotlight sample's kind of scene (box over floor), and curved receivers shadowing themselves
 // (the audit's waves, the class "curved receivers in their own shadow", waves_low_sun varied).
-// Percentage-closer and nearest filtering, slope factors 1..16, units 4 and 16, without and with
-// the facet bias (depth_map_facets.h).
+// Against them, faces seen almost edge-on close to a wide light with a coarse map, which the
+// slope term carried back past the receiver behind them (y6, k1 with the light moved 0.4, 0.3,
+// -0.3 and -0.5, -0.35, 0.2 m). Percentage-closer and nearest filtering, slope factors 1..16,
+// units 4 and 16, without and with the facet bias (depth_map_facets.h), the slope term bounded
+// to 0.01, 0.03, 0.1, 0.3 (the default), 0.5 of the depth or unbounded.
 bool acne() {
   std::vector<Column> columns;
   for (const char *name : {"tilted_plate_oblique", "light_facing_camera_posts", "box_resting",
                            "box_over_floor", "dueling_frusta", "audit/i6_post_in_valley_hill_casts",
-                           "waves_low_sun", "dunes_side_light", "ripples_grazing"}) {
+                           "waves_low_sun", "dunes_side_light", "ripples_grazing",
+                           "audit/y6_light_inside_tube_moved"}) {
     const std::string file = name;
     columns.push_back({file.substr(file.find_last_of('/') + 1), {name, hard_cases::load(file + ".json")}});
+  }
+  for (const glm::vec3 &offset : {glm::vec3(0.4f, 0.3f, -0.3f), glm::vec3(-0.5f, -0.35f, 0.2f)}) {
+    char label[64];
+    std::snprintf(label, sizeof label, "k1 light %+g %+g %+g", static_cast<double>(offset.x),
+                  static_cast<double>(offset.y), static_cast<double>(offset.z));
+    gs::Scene scene = hard_cases::load("audit/k1_light_in_closed_box.json");
+    scene.lights[0].position += offset;
+    columns.push_back({label, {label, scene}});
   }
   for (int degrees : {60, 85, 89}) {
     columns.push_back({"tilt " + std::to_string(degrees),
@@ -266,14 +278,24 @@ bool acne() {
   }
   std::vector<gs::BenchConfiguration> configurations;
   for (bool linear : {true, false}) {
-    for (const auto &[slope, units, facets] : std::vector<std::tuple<float, float, bool>>{
-             {1, 4, false}, {2, 4, false}, {2, 16, false}, {4, 4, false}, {8, 4, false},
-             {16, 4, false}, {1, 4, true}, {2, 4, true}, {4, 4, true}}) {
+    for (const auto &[slope, units, facets, bound] :
+         std::vector<std::tuple<float, float, bool, float>>{
+             {1, 4, false, 0.3f}, {2, 4, false, 0.3f}, {2, 16, false, 0.3f}, {4, 4, false, 0.3f},
+             {8, 4, false, 0.3f}, {16, 4, false, 0.3f}, {1, 4, true, 0.3f}, {2, 4, true, 0.3f},
+             {4, 4, true, 0.3f}, {2, 4, true, 0.01f}, {2, 4, true, 0.03f}, {2, 4, true, 0.1f},
+             {2, 4, true, 0.5f}, {2, 4, true, INFINITY}, {8, 4, true, INFINITY}}) {
       gs::BenchConfiguration c = depth_map(slope, units);
       c.options.depth_map_linear = linear;
       c.options.depth_map_facet_bias = facets;
+      c.options.depth_bias_bound = bound;
       c.options.depth_map_largest_footprint_px = INFINITY;  // every scene measured, none refused
-      c.settings += std::string(facets ? " facets" : "") + (linear ? " pcf" : " nearest");
+      std::string bounded = " unbounded";
+      if (std::isfinite(bound)) {
+        char text[32];
+        std::snprintf(text, sizeof text, " bound %g", static_cast<double>(bound));
+        bounded = text;
+      }
+      c.settings += std::string(facets ? " facets" : "") + bounded + (linear ? " pcf" : " nearest");
       configurations.push_back(c);
     }
   }

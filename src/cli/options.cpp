@@ -46,6 +46,12 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
       ->check(finite_number())
       ->check(CLI::Range(0.0f, 10000.0f))
       ->capture_default_str();
+  command.add_option("--bias-bound", choice.bias_bound,
+                     "depth-map: the slope term moves a caster back by at most this share of its "
+                     "distance from the light")
+      ->check(finite_number())
+      ->check(CLI::Range(0.0f, 1000.0f))
+      ->capture_default_str();
   command.add_flag("--nearest", choice.nearest,
                    "depth-map: nearest comparison instead of percentage-closer filtering");
   command.add_option("--volume", choice.volume, "stencil-volume: auto, zpass or zfail")
@@ -65,6 +71,7 @@ TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_siz
   options.alpha = choice.alpha == "distance" ? ShadowAlpha::Distance : ShadowAlpha::Constant;
   all.depth_bias_slope = choice.bias_slope;
   all.depth_bias_units = choice.bias_units;
+  all.depth_bias_bound = choice.bias_bound;
   all.depth_map_linear = !choice.nearest;
   using Mode = TechniqueOptions::VolumeMode;
   all.volume_mode = choice.volume == "zpass"   ? Mode::ZPass

@@ -16,6 +16,7 @@ struct TechniqueChoice {
   bool direct_path = false, point = false, affine = false, auto_size = false;
   std::string alpha = "constant";
   float bias_slope = 2.0f, bias_units = 4.0f;  // depth-map polygon offset (technique.h)
+  float bias_bound = 0.3f;  // depth-map: the slope term's largest share of the depth (technique.h)
   bool nearest = false;                       // depth-map filtering
   std::string volume = "auto";                // stencil-volume mode
 };

@@ -93,6 +93,12 @@ LightFrustum fit_light_frustum(const std::vector<WorldMesh> &meshes, const SpotL
 
 }  // namespace
 
+void Passes::draw_caster(const WorldMesh &mesh, const std::vector<glm::vec3> &positions) {
+  gl_.glVertexPointer(3, GL_FLOAT, 0, positions.data());
+  gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
+                     GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
+}
+
 void Passes::depth_from_lights(std::vector<std::string> &warnings,
                                std::vector<std::string> &errors) {
   gl_.glGenFramebuffers(1, &framebuffer_);
@@ -116,6 +122,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
                        "-bit depth maps do not exist (16 or 24); using 24");
+  }
+  // The bound is a share of the depth: below 0 (or NaN) the slid copy would come nearer the light
+  // than the caster and shadow what it lights, so such a value leaves the slope term unbounded.
+  const bool bounded = std::isfinite(options_.depth_bias_bound) && options_.depth_bias_bound >= 0.0f;
+  if (!bounded && !std::isinf(options_.depth_bias_bound)) {
+    warnings.push_back("depth-map: a slope bound of " + std::to_string(options_.depth_bias_bound) +
+                       " is not a share of the depth (0 or more); the slope term is unbounded");
   }
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     maps_.push_back(0);
@@ -188,6 +201,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     gl_.glMatrixMode(GL_MODELVIEW);
     gl_.glLoadMatrixf(&frustum.view[0][0]);
     // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
+    std::vector<glm::vec3> slid;  // world; the bound's copy of a caster, reused
     for (const WorldMesh &mesh : meshes_) {
       const auto object = static_cast<std::size_t>(mesh.object - scene_.objects.data());
       if (!mesh.object->casts_shadow || !drawn[object]) continue;
@@ -197,9 +211,22 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
           mesh.object->receives_shadow && options_.depth_map_facet_bias
               ? facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side)
               : mesh.position;
-      gl_.glVertexPointer(3, GL_FLOAT, 0, positions.data());
-      gl_.glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.object->mesh.triangles.size() * 3),
-                         GL_UNSIGNED_INT, mesh.object->mesh.triangles.data());
+      draw_caster(mesh, positions);
+      // The slope term bounded: the same caster again with every point slid along its own ray
+      // to (1 + bound) times its light-view depth (the light is the view's origin, so it covers
+      // the same texels), units only. GL_LESS keeps the nearer of the two in each texel, so no
+      // face is carried back by more than that share of its depth: a face the light sees almost
+      // edge-on spans much of its depth in one coarse texel, and its slope term alone passed the
+      // receiver behind it (y6, k1 with the light moved: 1 to 16% false light).
+      if (bounded) {
+        const glm::vec3 &origin = scene_.lights[light].position;  // world
+        slid.clear();
+        for (const glm::vec3 &p : positions)
+          slid.push_back(origin + (p - origin) * (1.0f + options_.depth_bias_bound));
+        gl_.glPolygonOffset(0.0f, options_.depth_bias_units);
+        draw_caster(mesh, slid);
+        gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);
+      }
     }
   }
   gl_.glDisable(GL_POLYGON_OFFSET_FILL);

@@ -60,6 +60,8 @@ class Passes {
   void bind_shadow_units(std::size_t light, GLenum compare);
   void release_shadow_units();
   void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
+  // Step 1: a caster's triangles at `positions` (world), with whatever offset is set.
+  void draw_caster(const WorldMesh &mesh, const std::vector<glm::vec3> &positions);
   float farthest_from(const SpotLight &light) const;  // largest light-space depth, metres
 
   const GlApi &gl_;

@@ -49,6 +49,11 @@ struct TechniqueOptions {
   // line (peter-panning starts at 64).
   float depth_bias_slope = 2.0f;
   float depth_bias_units = 4.0f;     // depth map: glPolygonOffset units
+  // Depth map: the slope term moves a caster back by at most this share of its light-view
+  // depth (depth_map_from_light.cpp); infinity: unbounded. 0.3, chosen with the acne sweep and
+  // everitt-5's 32-texel map: at 0.1 a few pixels of acne come back there (at 0.01 on the
+  // sweep's curved receivers), at 0.5 y6's tube passes the floor again (0.6% false light).
+  float depth_bias_bound = 0.3f;
   bool depth_map_linear = true;      // depth map: percentage-closer (GL_LINEAR) or nearest
   int depth_map_bits = 24;           // depth map: 16 or 24-bit depth texture
   // Depth map: a caster whose map texels span more screen pixels than this where its shadow
