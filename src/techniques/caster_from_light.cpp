@@ -171,15 +171,20 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
       x0 = std::min(x0, corners[k]->x), x1 = std::max(x1, corners[k]->x);
       y0 = std::min(y0, corners[k]->y), y1 = std::max(y1, corners[k]->y);
     }
-    for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
-      for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
+    // Cell bounds once a box, not once a loop test.
+    const int cx0 = cell_index(x0), cx1 = cell_index(x1);
+    const int cy0 = cell_index(y0), cy1 = cell_index(y1);
+    for (int cy = cy0; cy <= cy1; ++cy) {
+      for (int cx = cx0; cx <= cx1; ++cx) {
         const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
         view.occupied[cell_at] = true;
         view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
       }
     }
-    for (int cy = fine_index(y0); cy <= fine_index(y1); ++cy) {
-      for (int cx = fine_index(x0); cx <= fine_index(x1); ++cx) {
+    const int fx0 = fine_index(x0), fx1 = fine_index(x1);
+    const int fy0 = fine_index(y0), fy1 = fine_index(y1);
+    for (int cy = fy0; cy <= fy1; ++cy) {
+      for (int cx = fx0; cx <= fx1; ++cx) {
         view.covered[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
@@ -295,8 +300,10 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
       low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
     }
     if (!(low.x <= high.x)) continue;
-    for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
-      for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
+    const int x0 = fine_index(low.x), x1 = fine_index(high.x);
+    const int y0 = fine_index(low.y), y1 = fine_index(high.y);
+    for (int cy = y0; cy <= y1; ++cy) {
+      for (int cx = x0; cx <= x1; ++cx) {
         view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
