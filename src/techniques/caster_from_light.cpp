@@ -49,11 +49,15 @@ std::vector<unsigned> position_ids(const std::vector<glm::vec3> &positions) {
 // edge is on the caster's silhouette from the light: between a triangle facing the light and
 // one facing away, or on one triangle only (an open mesh's rim). Edges are joined by their
 // ends' positions (position_ids); facing is in light view space, with the light at the origin.
-std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view) {
+// `closed` is is_closed_surface(mesh) from the same sorted walks (each welded edge walked as
+// often each way by the triangles weld keeps), so the caster's edges are sorted once a view.
+std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view,
+                                   bool &closed) {
   const std::vector<unsigned> ids = position_ids(mesh.positions);
   struct EdgeWalk {
     std::uint64_t edge;  // lower id << 32 | higher id
     bool facing;
+    int direction;  // +1 walked lower id -> higher, -1 the other way, 0 a triangle weld drops
     std::size_t walk;
   };
   // Filed under the edge's lower id (a counting sort), then each id's few walks sorted by edge.
@@ -67,13 +71,22 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
   std::vector<EdgeWalk> walks(bucket_start.back());
   std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
   std::size_t walk = 0;
+  // weld (stencil_volume_geometry.cpp) refuses a mesh with a non-finite position and drops a
+  // triangle with two corners at one position or a zero cross product (model space).
+  closed = std::all_of(mesh.positions.begin(), mesh.positions.end(), [](const glm::vec3 &p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  });
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec3 a(in_view[t.x]), b(in_view[t.y]), c(in_view[t.z]);
     const bool facing = glm::dot(glm::cross(b - a, c - a), -a) > 0.0f;
+    const glm::vec3 &p = mesh.positions[t.x], &q = mesh.positions[t.y], &r = mesh.positions[t.z];
+    const bool welded = ids[t.x] != ids[t.y] && ids[t.y] != ids[t.z] && ids[t.z] != ids[t.x] &&
+                        glm::cross(q - p, r - p) != glm::vec3(0.0f);
     for (const auto &end : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
       const std::uint64_t low = std::min(ids[end.first], ids[end.second]);
       const std::uint64_t high = std::max(ids[end.first], ids[end.second]);
-      walks[next[low]++] = {low << 32 | high, facing, walk++};
+      const int direction = !welded ? 0 : ids[end.first] < ids[end.second] ? 1 : -1;
+      walks[next[low]++] = {low << 32 | high, facing, direction, walk++};
     }
   }
   for (std::size_t id = 0; id < ids.size(); ++id) {
@@ -83,10 +96,12 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
   }
   std::vector<bool> silhouette(walks.size(), false);
   for (std::size_t first = 0, end = 0; first < walks.size(); first = end) {
-    int facing = 0;
+    int facing = 0, balance = 0;
     for (end = first; end < walks.size() && walks[end].edge == walks[first].edge; ++end) {
       facing += walks[end].facing;
+      balance += walks[end].direction;
     }
+    closed = closed && balance == 0;
     const int count = static_cast<int>(end - first);
     const bool on_silhouette = count == 1 || (facing > 0 && facing < count);
     for (std::size_t k = first; k < end; ++k) silhouette[walks[k].walk] = on_silhouette;
@@ -125,10 +140,6 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
                 "memory directly";
   }
   CasterDraw draw;
-  // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
-  // sheet) may show the light only its back, and a closed one around the light nothing else, so
-  // those are drawn from both sides.
-  draw.closed = !view.surrounds_light && is_closed_surface(caster_mesh(object));
   const glm::mat4 to_view = view.view * object.model_to_world;
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> &screen = draw.vertices;
@@ -160,15 +171,20 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
       x0 = std::min(x0, corners[k]->x), x1 = std::max(x1, corners[k]->x);
       y0 = std::min(y0, corners[k]->y), y1 = std::max(y1, corners[k]->y);
     }
-    for (int cy = cell_index(y0); cy <= cell_index(y1); ++cy) {
-      for (int cx = cell_index(x0); cx <= cell_index(x1); ++cx) {
+    // Cell bounds once a box, not once a loop test.
+    const int cx0 = cell_index(x0), cx1 = cell_index(x1);
+    const int cy0 = cell_index(y0), cy1 = cell_index(y1);
+    for (int cy = cy0; cy <= cy1; ++cy) {
+      for (int cx = cx0; cx <= cx1; ++cx) {
         const auto cell_at = static_cast<std::size_t>(cy * LightView::kCells + cx);
         view.occupied[cell_at] = true;
         view.nearest[cell_at] = std::min(view.nearest[cell_at], nearest);
       }
     }
-    for (int cy = fine_index(y0); cy <= fine_index(y1); ++cy) {
-      for (int cx = fine_index(x0); cx <= fine_index(x1); ++cx) {
+    const int fx0 = fine_index(x0), fx1 = fine_index(x1);
+    const int fy0 = fine_index(y0), fy1 = fine_index(y1);
+    for (int cy = fy0; cy <= fy1; ++cy) {
+      for (int cx = fx0; cx <= fx1; ++cx) {
         view.covered[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
@@ -185,7 +201,12 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   };
   // The caster's silhouette from the light (silhouette_walks), traced from the lower end of
   // each edge by model position.
-  const std::vector<bool> silhouette = silhouette_walks(mesh, in_view);
+  bool closed = false;
+  const std::vector<bool> silhouette = silhouette_walks(mesh, in_view, closed);
+  // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
+  // sheet) may show the light only its back, and a closed one around the light nothing else, so
+  // those are drawn from both sides.
+  draw.closed = !view.surrounds_light && closed;
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
     const glm::uvec3 &t = mesh.triangles[k];
     const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
@@ -279,8 +300,10 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
       low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
     }
     if (!(low.x <= high.x)) continue;
-    for (int cy = fine_index(low.y); cy <= fine_index(high.y); ++cy) {
-      for (int cx = fine_index(low.x); cx <= fine_index(high.x); ++cx) {
+    const int x0 = fine_index(low.x), x1 = fine_index(high.x);
+    const int y0 = fine_index(low.y), y1 = fine_index(high.y);
+    for (int cy = y0; cy <= y1; ++cy) {
+      for (int cx = x0; cx <= x1; ++cx) {
         view.silhouette[static_cast<std::size_t>(cy * LightView::kFineCells + cx)] = true;
       }
     }
