@@ -34,9 +34,9 @@ struct SilhouetteSegment {
 // (docs/hard_cases_results.md).
 inline constexpr float kEdgeErrorReceiverShare = 0.001f;
 
-// The screen pixels (Glide screen) of the receivers' triangles that face the camera and lie
-// wholly before it, clipped to the screen, at most the screen's: the budget's base. Receivers
-// overlapping on screen count twice, ones crossing the near plane not at all.
+// The screen pixels (Glide screen) of the receivers' triangles that face the camera, the parts
+// before it, clipped to the screen, at most the screen's: the budget's base. Receivers
+// overlapping on screen count twice.
 float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame);
 
 // Estimated interior error (wrong pixels beyond an edge's band), for the texture as it is and at
