@@ -120,10 +120,6 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
   constexpr float kContactShare = 1e-3f;
   // The texture's edge strays less than this many texels from a straight edge.
   constexpr float kMostStrayTexels = 0.75f;
-  // How far from a visible true edge a wrong pixel is not interior error (src/measure/metrics.cpp:
-  // the pixels on both sides of the edge are its boundary, and those within one of a boundary
-  // pixel its band, so an edge strayed by up to about two pixels makes band pixels only).
-  constexpr float kExcusedPixels = 2.0f;
   for (std::size_t index : candidates) {
     const SilhouetteSegment &segment = segments[index];
     const float height_a = glm::dot(normal, segment.a - origin);
@@ -168,7 +164,15 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
       continue;  // the caster hides the floor beyond its lit face's foot
     }
-    const float length = glm::length(screen_pixels(space, end) - screen_pixels(space, start));
+    const glm::vec2 screen_along = screen_pixels(space, end) - screen_pixels(space, start);
+    const float length = glm::length(screen_along);
+    // How far from a visible true edge a wrong pixel is not interior error (src/measure/
+    // metrics.cpp): a pixel with a 4-neighbour across the edge is its boundary, up to
+    // max(|n.x|, |n.y|) from it across (n: the edge's unit normal on screen), and one within one
+    // (Chebyshev) of a boundary pixel its band, up to |n.x| + |n.y| further: 2 pixels for an
+    // edge along the screen's rows or columns, 2.12 at 45 degrees.
+    const glm::vec2 across = glm::abs(glm::vec2(screen_along.y, -screen_along.x)) / std::max(length, 1e-6f);
+    const float excused_pixels = std::max(across.x, across.y) + across.x + across.y;
     const glm::vec2 along(glm::dot(end - start, t1), glm::dot(end - start, t2));
     if (!(length > 1e-3f) || !(glm::length(along) > 0.0f)) continue;
     const glm::vec2 u = glm::normalize(along);
@@ -187,7 +191,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (!contact && most_pixels_per_texel * kMostStrayTexels <= kExcusedPixels) continue;
+    if (!contact && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
     // along a straight edge).
     const int samples = std::clamp(static_cast<int>(std::ceil(2.0f * glm::length(texel_along))), 1, 64);
@@ -201,12 +205,12 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
-        if (!contact && per_texel * kMostStrayTexels <= kExcusedPixels) break;
+        if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
         const float offset = texture_edge_offset(on_edge * scale, away, bilinear);  // texels
         // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
         // caster.
         const float stray = contact ? std::max(offset, 0.0f) * per_texel
-                                    : std::max(std::abs(offset) * per_texel - kExcusedPixels, 0.0f);
+                                    : std::max(std::abs(offset) * per_texel - excused_pixels, 0.0f);
         estimate.pixels[size] += sample_length * stray;
       }
     }
