@@ -344,7 +344,6 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           edge_error_receiver_pixels = job.receivers.edge_error_receiver_pixels;
         }
       }
-      result.edge_error_px = std::max(result.edge_error_px, edge_error.pixels[0]);
       // The frame's budget is shared: casters take it in the scene's order, and one that would
       // overdraw it is refused.
       EdgeErrorEstimate within_budget = edge_error;

@@ -221,9 +221,6 @@ struct ShadowFrame {
   // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
   // every caster and light, cast or refused: what largest_texel_footprint_px bounds.
   float texel_footprint_px = 0.0f;
-  // The most estimated pixels of error along a shadow's edges (shadow_edge_error.h), over the
-  // casters and lights that passed the footprint check, cast or refused.
-  float edge_error_px = 0.0f;
 };
 
 // The whole frame in the article's order, into the back buffer. With `synchronous`, each step
