@@ -49,10 +49,13 @@ std::vector<unsigned> position_ids(const std::vector<glm::vec3> &positions) {
 // edge is on the caster's silhouette from the light: between a triangle facing the light and
 // one facing away, or on one triangle only (an open mesh's rim). Edges are joined by their
 // ends' positions (position_ids); facing is in light view space, with the light at the origin.
-// `closed` is is_closed_surface(mesh) from the same sorted walks (each welded edge walked as
-// often each way by the triangles weld keeps), so the caster's edges are sorted once a view.
-std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view,
-                                   bool &closed) {
+// One walk of each edge also has kTakenWalk set, so that an edge can be taken once: the first
+// whose triangle faces the light (the first of a rim facing away). `closed` is
+// is_closed_surface(mesh) from the same sorted walks (each welded edge walked as often each way
+// by the triangles weld keeps), so the caster's edges are sorted once a view.
+constexpr std::uint8_t kOnSilhouette = 1, kTakenWalk = 2;
+std::vector<std::uint8_t> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view,
+                                           bool &closed) {
   const std::vector<unsigned> ids = position_ids(mesh.positions);
   struct EdgeWalk {
     std::uint64_t edge;  // lower id << 32 | higher id
@@ -94,7 +97,7 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
               walks.begin() + static_cast<std::ptrdiff_t>(bucket_start[id + 1]),
               [](const EdgeWalk &x, const EdgeWalk &y) { return x.edge < y.edge; });
   }
-  std::vector<bool> silhouette(walks.size(), false);
+  std::vector<std::uint8_t> silhouette(walks.size(), 0);
   for (std::size_t first = 0, end = 0; first < walks.size(); first = end) {
     int facing = 0, balance = 0;
     for (end = first; end < walks.size() && walks[end].edge == walks[first].edge; ++end) {
@@ -104,7 +107,11 @@ std::vector<bool> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4
     closed = closed && balance == 0;
     const int count = static_cast<int>(end - first);
     const bool on_silhouette = count == 1 || (facing > 0 && facing < count);
-    for (std::size_t k = first; k < end; ++k) silhouette[walks[k].walk] = on_silhouette;
+    if (!on_silhouette) continue;
+    for (std::size_t k = first; k < end; ++k) silhouette[walks[k].walk] = kOnSilhouette;
+    std::size_t taken = first;
+    while (taken + 1 < end && !walks[taken].facing) ++taken;
+    silhouette[walks[taken].walk] |= kTakenWalk;
   }
   return silhouette;
 }
@@ -141,6 +148,7 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   }
   CasterDraw draw;
   const glm::mat4 to_view = view.view * object.model_to_world;
+  const glm::vec3 light_world = view.position;
   const Mesh &mesh = caster_mesh(object);
   std::vector<GrVertex> &screen = draw.vertices;
   screen.resize(mesh.positions.size());
@@ -202,7 +210,7 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   // The caster's silhouette from the light (silhouette_walks), traced from the lower end of
   // each edge by model position.
   bool closed = false;
-  const std::vector<bool> silhouette = silhouette_walks(mesh, in_view, closed);
+  const std::vector<std::uint8_t> silhouette = silhouette_walks(mesh, in_view, closed);
   // A closed caster's back faces lie inside its front faces' outline; an open one (a tube, a
   // sheet) may show the light only its back, and a closed one around the light nothing else, so
   // those are drawn from both sides.
@@ -211,10 +219,13 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
     const glm::uvec3 &t = mesh.triangles[k];
     const unsigned ends[3][2] = {{t.x, t.y}, {t.y, t.z}, {t.z, t.x}};
     for (int e = 0; e < 3; ++e) {
-      if (!silhouette[3 * k + static_cast<std::size_t>(e)]) continue;
+      const std::uint8_t walk = silhouette[3 * k + static_cast<std::size_t>(e)];
+      if (!walk) continue;
       unsigned i = ends[e][0], j = ends[e][1];
-      const glm::vec3 &p = mesh.positions[i], &q = mesh.positions[j];
-      if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(i, j);
+      if (std::tie(mesh.positions[j].x, mesh.positions[j].y, mesh.positions[j].z) <
+          std::tie(mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z)) {
+        std::swap(i, j);
+      }
       // The part of the edge inside the caster planes (light view space, parametric clip).
       float from = 0.0f, to = 1.0f;
       for (const glm::vec4 &plane : view.caster_planes) {
@@ -226,8 +237,21 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
       if (from >= to) continue;
       trace(to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * from), view.size, view.size),
             to_screen(view.projection * (in_view[i] + (in_view[j] - in_view[i]) * to), view.size, view.size));
+      if (!(walk & kTakenWalk)) continue;  // the edge's other walks trace the same cells
+      const glm::vec3 world_i(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+      const glm::vec3 world_j(object.model_to_world * glm::vec4(mesh.positions[j], 1.0f));
+      // The taken walk's triangle (world): its side towards the light, and its centre, which
+      // the light sees on the shadow's side of the edge.
+      const glm::vec3 a(object.model_to_world * glm::vec4(mesh.positions[t.x], 1.0f));
+      const glm::vec3 b(object.model_to_world * glm::vec4(mesh.positions[t.y], 1.0f));
+      const glm::vec3 c(object.model_to_world * glm::vec4(mesh.positions[t.z], 1.0f));
+      const glm::vec3 face = glm::cross(b - a, c - a);
+      view.silhouette_segments.push_back({glm::mix(world_i, world_j, from), glm::mix(world_i, world_j, to),
+                                          glm::dot(face, light_world - a) < 0.0f ? -face : face,
+                                          (a + b + c) / 3.0f});
     }
   }
+  const glm::mat4 world_from_view = glm::inverse(view.view);
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
   std::vector<float> fan_w;
@@ -266,6 +290,10 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
         const float scale = 1e-4f * (glm::length(glm::vec3(p)) + glm::length(glm::vec3(q)));
         if (std::abs(glm::dot(plane, p)) <= scale && std::abs(glm::dot(plane, q)) <= scale) {
           trace(fan[k], fan[(k + 1) % fan.size()]);
+          // The cut lies in the receiver's plane; no face or side of it is known.
+          view.silhouette_segments.push_back(
+              {glm::vec3(world_from_view * p), glm::vec3(world_from_view * q), glm::vec3(0.0f),
+               glm::vec3(world_from_view * p)});
         }
       }
     }

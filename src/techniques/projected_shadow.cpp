@@ -172,6 +172,12 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       options.largest_texel_footprint_px > 0.0f ? options.largest_texel_footprint_px
       : point_sampled                           ? kLargestPointSampledFootprintPx
                                                 : kLargestTexelFootprintPx;
+  // The most pixels the estimated error along the frame's shadow edges may reach
+  // (shadow_edge_error.h), from the receivers' pixels once a shadow has an estimate; off with
+  // the footprint check.
+  std::optional<float> largest_edge_error;
+  if (std::isinf(options.largest_texel_footprint_px)) largest_edge_error = INFINITY;
+  float edge_error_taken = 0.0f;  // by the shadows cast so far
   auto add_note = [&](const LightView &view) {  // once per frame
     if (!view.note.empty() &&
         std::find(result.warnings.begin(), result.warnings.end(), view.note) == result.warnings.end()) {
@@ -327,6 +333,32 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         next_address = caster_address;  // its textures are not used
         continue;
       }
+      // The error along the shadow's edges, over all its textures (shadow_edge_error.h).
+      EdgeErrorEstimate edge_error;
+      std::size_t edge_error_receiver = 0;
+      float edge_error_receiver_pixels = -1.0f;
+      for (const ShadowJob &job : caster_jobs) {
+        edge_error.add(job.receivers.edge_error);
+        if (job.receivers.edge_error_receiver_pixels > edge_error_receiver_pixels) {
+          edge_error_receiver = job.receivers.edge_error_receiver;
+          edge_error_receiver_pixels = job.receivers.edge_error_receiver_pixels;
+        }
+      }
+      // The frame's budget is shared: casters take it in the scene's order, and one that would
+      // overdraw it is refused.
+      EdgeErrorEstimate within_budget = edge_error;
+      for (float &pixels : within_budget.pixels) pixels += edge_error_taken;
+      if (!largest_edge_error && edge_error.pixels[0] > 0.0f) {
+        largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene, frame);
+      }
+      if (largest_edge_error && within_budget.pixels[0] > *largest_edge_error) {
+        result.errors.push_back(shadow_edge_error_message(
+            scene, light, caster, edge_error_receiver, edge_error_taken, within_budget,
+            *largest_edge_error, fitted.size, 512));  // its largest size
+        next_address = caster_address;
+        continue;
+      }
+      edge_error_taken += edge_error.pixels[0];
       for (ShadowJob &job : caster_jobs) result.jobs.push_back(std::move(job));
     }
   }

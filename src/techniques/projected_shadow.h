@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
+#include "techniques/shadow_edge_error.h"
 #include "techniques/texel_footprint.h"
 
 #include <glide.h>
@@ -36,7 +37,8 @@ struct ProjectedShadowOptions {
   int border_texels = 2;       // clean border the light's view keeps around the caster
   // A shadow whose texels span more screen pixels than this on a receiver it falls on is
   // refused (a per-frame error, nothing cast): its edge would stray more than a pixel from the
-  // true one. 0: the measured default for the filter (texel_footprint.h); infinity: no check.
+  // true one. 0: the measured default for the filter (texel_footprint.h); infinity: no check
+  // (neither this one nor the error along the shadow's edges, shadow_edge_error.h).
   float largest_texel_footprint_px = 0.0f;
 };
 
@@ -98,6 +100,9 @@ struct LightView {
   // The fine cells the caster's silhouette from the light crosses (and its cut by edge_planes):
   // where the shadow's edge can lie (texel_footprint.h).
   std::vector<bool> silhouette = std::vector<bool>(kFineCells * kFineCells, false);
+  // The same silhouette's edges (world space), for the error along the shadow's edges
+  // (shadow_edge_error.h); the cut by a SurfaceMask's surface is not among them.
+  std::vector<SilhouetteSegment> silhouette_segments;
 };
 
 struct ShadowTexture {
@@ -121,6 +126,11 @@ struct ReceiverCoords {
   // Per receiver polygon the shadow can fall on: how many screen pixels a texel spans there,
   // and over how many pixels (texel_footprint.h).
   std::vector<FootprintSample> footprints;
+  // The interior error the texels can make along the shadow's edges on those polygons, and the
+  // receiver (index into scene.objects) with the most of it (shadow_edge_error.h).
+  EdgeErrorEstimate edge_error;
+  std::size_t edge_error_receiver = 0;
+  float edge_error_receiver_pixels = 0.0f;
 };
 
 struct StepTimes {

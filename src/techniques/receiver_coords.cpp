@@ -209,8 +209,20 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   const SilhouetteRows silhouette_rows(view);
   std::vector<ClipVertex> polygon, scratch, footprint_polygon;
   std::vector<glm::vec4> footprint_planes;
+  // The silhouette segments' boxes in the texture (light screen, texels; the whole plane for a
+  // segment reaching behind the light), to pick those that can land on a polygon.
+  std::vector<glm::vec4> segment_boxes;  // low x, low y, high x, high y
+  for (const SilhouetteSegment &segment : view.silhouette_segments) {
+    glm::vec2 low(-INFINITY), high(INFINITY);
+    const glm::vec4 ends[2] = {light_clip * glm::vec4(segment.a, 1.0f),
+                               light_clip * glm::vec4(segment.b, 1.0f)};
+    if (ends[0].w > 0.0f && ends[1].w > 0.0f) texel_box(view, ends, 2, low, high);
+    segment_boxes.emplace_back(low, high);
+  }
+  std::vector<std::size_t> candidates;
+  EdgeErrorEstimate receiver_edge_error;  // of the receiver in hand
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
-  // corners, and their light clip coordinates).
+  // corners, and their light clip coordinates), and the error along the shadow's edges there.
   auto measure_footprint = [&](std::size_t receiver, const glm::vec3 &normal,
                                const glm::vec3 *const *corners, const glm::vec4 *corners_clip,
                                std::size_t count) {
@@ -227,12 +239,30 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     if (sample.screen_area <= 0.0f) return;
     sample.receiver = receiver;
     coords.footprints.push_back(sample);
+    // The shadow's edges, thrown from the light, land on the polygon only within its box in
+    // the texture (light screen texels; a texel more for the filter's reach).
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const ClipVertex &v : footprint_polygon) {
+      const glm::vec4 clip = light_clip * glm::vec4(v.world, 1.0f);
+      glm::vec2 box_low, box_high;
+      texel_box(view, &clip, 1, box_low, box_high);
+      low = glm::min(low, box_low - 1.0f), high = glm::max(high, box_high + 1.0f);
+    }
+    candidates.clear();
+    for (std::size_t k = 0; k < segment_boxes.size(); ++k) {
+      const glm::vec4 &box = segment_boxes[k];
+      if (box.x <= high.x && box.z >= low.x && box.y <= high.y && box.w >= low.y) candidates.push_back(k);
+    }
+    add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
+                          view.silhouette_segments, candidates,
+                          options.bilinear && !options.chroma_key, receiver_edge_error);
   };
 
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
     if (r == caster || !receiver.object->receives_shadow) continue;
     if (receivers && !(*receivers)[r]) continue;
+    receiver_edge_error = {};
     const std::size_t n = receiver.world.size();
     std::vector<glm::vec4> lc(n);  // light clip
     std::vector<unsigned> flags(n);
@@ -310,6 +340,11 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         }
         if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
       }
+    }
+    coords.edge_error.add(receiver_edge_error);
+    if (receiver_edge_error.pixels[0] > coords.edge_error_receiver_pixels) {
+      coords.edge_error_receiver = r;
+      coords.edge_error_receiver_pixels = receiver_edge_error.pixels[0];
     }
   }
   return coords;

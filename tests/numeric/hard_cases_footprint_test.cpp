@@ -67,7 +67,9 @@ TEST(HardCases, CoarseTexelsTowardsTheCameraAreRefused) {
   EXPECT_EQ(crate.chroma, std::set<int>({32}));
   const Refused rail =
       expect_fine_or_refused("rail_toward_camera.json", load("rail_toward_camera.json"), kSizes);
-  EXPECT_EQ(rail.projected, std::set<int>({32, 64}));
+  // 128 since the estimate of the error along the shadow's edges (shadow_edge_error.h): 0.086%
+  // measured there, the estimate 0.14% of the receivers' pixels (docs/hard_cases_results.md).
+  EXPECT_EQ(rail.projected, std::set<int>({32, 64, 128}));
   EXPECT_EQ(rail.chroma, std::set<int>({32, 64, 128}));
 }
 

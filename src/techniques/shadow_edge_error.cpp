@@ -1,0 +1,287 @@
+// The interior error along a projected shadow's edges (shadow_edge_error.h): each silhouette
+// edge thrown from the light onto a receiver polygon's plane (world space), clipped to the
+// polygon, measured on screen (pixels) and against the texture (texels) where it lands.
+#include "techniques/shadow_edge_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gs {
+namespace {
+
+// A projection's NDC x, y at world point p differentiated along the plane's tangents t1, t2
+// (world, unit), scaled by half the extent [-1, 1] spans (texels or pixels): per metre.
+glm::mat2 tangent_jacobian(const glm::mat4 &clip_from_world, const glm::vec3 &p,
+                           const glm::vec2 &extent, const glm::vec3 &t1, const glm::vec3 &t2) {
+  const glm::vec4 c = clip_from_world * glm::vec4(p, 1.0f);
+  auto row = [&](int r) {  // GLM is column-major: m[column][row]
+    return glm::vec3(clip_from_world[0][r], clip_from_world[1][r], clip_from_world[2][r]);
+  };
+  const glm::vec3 dx = (row(0) - (c.x / c.w) * row(3)) / c.w * (0.5f * extent.x);
+  const glm::vec3 dy = (row(1) - (c.y / c.w) * row(3)) / c.w * (0.5f * extent.y);
+  return glm::mat2(glm::dot(dx, t1), glm::dot(dy, t1), glm::dot(dx, t2), glm::dot(dy, t2));
+}
+
+// Screen pixels an edge through world point p, running along the tangent-plane direction u
+// (unit, in t1, t2 coordinates), moves across itself when the texture moves it one texel
+// across itself: with T texels and P pixels per metre, |det P| |T u| / (|det T| |P u|), which
+// lies between the smaller and the larger singular value of pixels per texel.
+float edge_pixels_per_texel(const FootprintSpace &space, const glm::vec3 &p, const glm::vec3 &t1,
+                            const glm::vec3 &t2, const glm::vec2 &u) {
+  const glm::mat2 texels = tangent_jacobian(space.light_clip, p, glm::vec2(space.texels), t1, t2);
+  const glm::mat2 pixels = tangent_jacobian(space.camera_clip, p, space.pixels, t1, t2);
+  const float texel_area = std::abs(glm::determinant(texels));
+  const float along_screen = glm::length(pixels * u);
+  // A plane edge-on to the light: one texel spans the whole plane. Finite, so it sums.
+  if (!(texel_area > 1e-12f)) return 1e6f;
+  if (!(along_screen > 1e-12f)) return 0.0f;  // the edge seen end-on: no length to stray along
+  return std::min(std::abs(glm::determinant(pixels)) * glm::length(texels * u) /
+                      (texel_area * along_screen), 1e6f);
+}
+
+// Narrows [from, to] (parameters along a segment) to where a linear function with values
+// `at_from_end` at 0 and `at_to_end` at 1 is at least 0.
+void keep_non_negative(float at_from_end, float at_to_end, float &from, float &to) {
+  if (at_from_end < 0.0f && at_to_end < 0.0f) {
+    from = 1.0f, to = 0.0f;
+  } else if (at_from_end < 0.0f) {
+    from = std::max(from, at_from_end / (at_from_end - at_to_end));
+  } else if (at_to_end < 0.0f) {
+    to = std::min(to, at_from_end / (at_from_end - at_to_end));
+  }
+}
+
+glm::vec2 screen_pixels(const FootprintSpace &space, const glm::vec3 &world) {
+  const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
+  return glm::vec2(c.x, c.y) / c.w * 0.5f * space.pixels;
+}
+
+// Light screen texels (x right, y down, texel centres at i + 0.5) of a world point before the
+// light (w > 0).
+glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
+  const glm::vec4 c = space.light_clip * glm::vec4(world, 1.0f);
+  return (glm::vec2(c.x, -c.y) / c.w * 0.5f + 0.5f) * space.texels;
+}
+
+// Where the texture's edge lies near `on_edge` (texels), as a signed distance (texels) along
+// `away` (unit, pointing away from the covered side) from the straight edge through it: step 1
+// covers the texel centres on the edge's covered side, and the mask is shadow where the
+// filtered alpha (bilinear, or the nearest texel's) is at least half. Bisection along `away`:
+// two texels back every centre that weighs is covered, two texels on none is.
+float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, bool bilinear) {
+  auto covered = [&](float x, float y) {
+    return glm::dot(glm::vec2(x, y) - on_edge, away) < 0.0f ? 1.0f : 0.0f;
+  };
+  auto alpha = [&](const glm::vec2 &p) {
+    if (!bilinear) return covered(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
+    // Voodoo 1 bilinear: a 4-bit fraction between texel centres (the shim's default).
+    const float x0 = std::floor(p.x - 0.5f), y0 = std::floor(p.y - 0.5f);
+    const float wx = std::floor((p.x - 0.5f - x0) * 16.0f) / 16.0f;
+    const float wy = std::floor((p.y - 0.5f - y0) * 16.0f) / 16.0f;
+    return (1.0f - wy) * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 0.5f) + wx * covered(x0 + 1.5f, y0 + 0.5f)) +
+           wy * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 1.5f) + wx * covered(x0 + 1.5f, y0 + 1.5f));
+  };
+  float inside = -2.0f, outside = 2.0f;
+  for (int step = 0; step < 12; ++step) {
+    const float middle = 0.5f * (inside + outside);
+    (alpha(on_edge + middle * away) >= 0.5f ? inside : outside) = middle;
+  }
+  return 0.5f * (inside + outside);
+}
+
+}  // namespace
+
+void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
+                           const glm::vec3 &camera_position, const glm::vec3 &normal,
+                           const std::vector<ClipVertex> &polygon,
+                           const std::vector<SilhouetteSegment> &segments,
+                           const std::vector<std::size_t> &candidates, bool bilinear,
+                           EdgeErrorEstimate &estimate) {
+  if (polygon.size() < 3 || candidates.empty()) return;
+  const glm::vec3 origin = polygon[0].world;
+  // Distances (world metres) from the polygon's plane, positive on the light's side.
+  const float light_height = glm::dot(normal, light_position - origin);
+  if (!(light_height > 0.0f)) return;
+  // The polygon's sides as inward tangent-plane normals: counter-clockwise about `normal`
+  // unless its area says otherwise.
+  glm::vec3 area(0.0f);
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    area += glm::cross(polygon[i].world - origin, polygon[(i + 1) % polygon.size()].world - origin);
+  }
+  const float winding = glm::dot(area, normal) < 0.0f ? -1.0f : 1.0f;
+  const glm::vec3 helper = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 t1 = glm::normalize(glm::cross(normal, helper));
+  const glm::vec3 t2 = glm::cross(normal, t1);
+  // A caster edge within this share of the light's height of the plane touches it.
+  constexpr float kContactShare = 1e-3f;
+  // The texture's edge strays less than this many texels from a straight edge.
+  constexpr float kMostStrayTexels = 0.75f;
+  for (std::size_t index : candidates) {
+    const SilhouetteSegment &segment = segments[index];
+    const float height_a = glm::dot(normal, segment.a - origin);
+    const float height_b = glm::dot(normal, segment.b - origin);
+    // Only what lies between the plane and the light throws a shadow on it; a point as high
+    // as the light would throw it to infinity.
+    const float highest = light_height * 0.999f;
+    float from = 0.0f, to = 1.0f;
+    keep_non_negative(height_a, height_b, from, to);
+    keep_non_negative(highest - height_a, highest - height_b, from, to);
+    if (!(from < to)) continue;
+    const glm::vec3 caster_ends[2] = {glm::mix(segment.a, segment.b, from),
+                                      glm::mix(segment.a, segment.b, to)};
+    // A cut (no sides known) borders the caster's own pixels on screen, which the error
+    // measure takes as a shadow edge: it is a visible edge.
+    const bool sides_known = glm::dot(segment.lit_face, segment.lit_face) > 0.0f;
+    bool contact = true;
+    glm::vec3 shadow_ends[2];
+    for (int k = 0; k < 2; ++k) {
+      const float height = glm::dot(normal, caster_ends[k] - origin);
+      contact = contact && sides_known && height <= kContactShare * light_height;
+      shadow_ends[k] = light_position +
+                       (caster_ends[k] - light_position) * (light_height / (light_height - height));
+    }
+    // The shadow edge clipped to the polygon (world space, in its plane). One along a side the
+    // polygon shares with its neighbour is in both: each takes half.
+    from = 0.0f, to = 1.0f;
+    float share = 1.0f;
+    for (std::size_t i = 0; i < polygon.size() && from < to; ++i) {
+      const glm::vec3 &p = polygon[i].world, &q = polygon[(i + 1) % polygon.size()].world;
+      const glm::vec3 inward = winding * glm::cross(normal, q - p);
+      const float at_start = glm::dot(inward, shadow_ends[0] - p);
+      const float at_end = glm::dot(inward, shadow_ends[1] - p);
+      const float on_side = 1e-4f * glm::dot(q - p, q - p);  // |inward| x 1e-4 |q - p|
+      if (std::abs(at_start) <= on_side && std::abs(at_end) <= on_side) share = 0.5f;
+      keep_non_negative(at_start, at_end, from, to);
+    }
+    if (!(from < to)) continue;
+    const glm::vec3 start = glm::mix(shadow_ends[0], shadow_ends[1], from);
+    const glm::vec3 end = glm::mix(shadow_ends[0], shadow_ends[1], to);
+    if (contact &&
+        glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
+      continue;  // the caster hides the floor beyond its lit face's foot
+    }
+    const glm::vec2 screen_along = screen_pixels(space, end) - screen_pixels(space, start);
+    const float length = glm::length(screen_along);
+    // How far from a visible true edge a wrong pixel is not interior error (src/measure/
+    // metrics.cpp): a pixel with a 4-neighbour across the edge is its boundary, up to
+    // max(|n.x|, |n.y|) from it across (n: the edge's unit normal on screen), and one within one
+    // (Chebyshev) of a boundary pixel its band, up to |n.x| + |n.y| further: 2 pixels for an
+    // edge along the screen's rows or columns, 2.12 at 45 degrees.
+    const glm::vec2 across = glm::abs(glm::vec2(screen_along.y, -screen_along.x)) / std::max(length, 1e-6f);
+    const float excused_pixels = std::max(across.x, across.y) + across.x + across.y;
+    const glm::vec2 along(glm::dot(end - start, t1), glm::dot(end - start, t2));
+    if (!(length > 1e-3f) || !(glm::length(along) > 0.0f)) continue;
+    const glm::vec2 u = glm::normalize(along);
+    // The edge in the texture, and the side of it the caster covers.
+    const glm::vec2 texel_start = texel_of(space, start), texel_end = texel_of(space, end);
+    const glm::vec2 texel_along = texel_end - texel_start;
+    if (!(glm::length(texel_along) > 1e-6f)) continue;
+    glm::vec2 away = glm::normalize(glm::vec2(texel_along.y, -texel_along.x));
+    if (sides_known && glm::dot(texel_of(space, segment.face_point) - texel_start, away) > 0.0f) {
+      away = -away;
+    }
+    // Screen pixels across the edge per texel: where even the largest stray stays within the
+    // excused pixels of a visible edge, nothing counts.
+    float most_pixels_per_texel = 0.0f;
+    for (const glm::vec3 &end_point : {start, end}) {
+      most_pixels_per_texel =
+          std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
+    }
+    if (!contact && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
+    // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
+    // along a straight edge).
+    const int samples = std::clamp(static_cast<int>(std::ceil(2.0f * glm::length(texel_along))), 1, 64);
+    const float sample_length = share * length / static_cast<float>(samples);
+    for (int k = 0; k < samples; ++k) {
+      const float f = (static_cast<float>(k) + 0.5f) / static_cast<float>(samples);
+      const glm::vec3 point = glm::mix(start, end, f);
+      const glm::vec2 on_edge = texel_of(space, point);
+      const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
+      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+        // The texture 2^size times larger: the same view, its texels that much smaller.
+        const float scale = static_cast<float>(1 << size);
+        const float per_texel = pixels_per_texel / scale;
+        if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
+        const float offset = texture_edge_offset(on_edge * scale, away, bilinear);  // texels
+        // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
+        // caster.
+        const float stray = contact ? std::max(offset, 0.0f) * per_texel
+                                    : std::max(std::abs(offset) * per_texel - excused_pixels, 0.0f);
+        estimate.pixels[size] += sample_length * stray;
+      }
+    }
+  }
+}
+
+float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
+  const float width = static_cast<float>(scene.width), height = static_cast<float>(scene.height);
+  // The screen's sides as half-planes (x, y, 1) . side >= 0.
+  const glm::vec3 sides[4] = {{1, 0, 0}, {-1, 0, width}, {0, 1, 0}, {0, -1, height}};
+  std::vector<glm::vec2> polygon, clipped;
+  std::vector<ClipVertex> camera_polygon, scratch;
+  std::vector<GrVertex> screen;
+  float pixels = 0.0f;
+  for (const ProjectedObject &receiver : frame.objects) {
+    if (!receiver.object->receives_shadow) continue;
+    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+      if (glm::dot(glm::cross(b - a, c - a), scene.camera.position - a) <= 0.0f) continue;
+      polygon.clear();
+      if ((receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0) {
+        for (unsigned i : {t.x, t.y, t.z}) polygon.emplace_back(receiver.screen[i].x, receiver.screen[i].y);
+      } else {  // through the camera's near plane and guard band first
+        camera_polygon = {{{}, a, {}}, {{}, b, {}}, {{}, c, {}}};
+        project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
+        for (const GrVertex &v : screen) polygon.emplace_back(v.x, v.y);
+      }
+      for (const glm::vec3 &side : sides) {  // Sutherland-Hodgman
+        clipped.clear();
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+          const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+          const float dp = glm::dot(side, glm::vec3(p, 1.0f)), dq = glm::dot(side, glm::vec3(q, 1.0f));
+          if (dp >= 0.0f) clipped.push_back(p);
+          if ((dp >= 0.0f) != (dq >= 0.0f)) clipped.push_back(p + (q - p) * (dp / (dp - dq)));
+        }
+        polygon.swap(clipped);
+      }
+      float twice_area = 0.0f;  // shoelace
+      for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+        twice_area += p.x * q.y - p.y * q.x;
+      }
+      pixels += 0.5f * std::abs(twice_area);
+    }
+  }
+  return std::min(pixels, width * height);
+}
+
+std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
+                                      std::size_t receiver, float taken,
+                                      const EdgeErrorEstimate &frame, float largest_pixels,
+                                      int size, int largest_size) {
+  int accepted = size, doubling = 0;
+  while (accepted <= largest_size &&
+         (doubling >= EdgeErrorEstimate::kSizes || frame.pixels[doubling] > largest_pixels)) {
+    accepted *= 2, ++doubling;
+  }
+  char pixels[200];
+  std::snprintf(pixels, sizeof pixels,
+                "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
+                "pixels; %.0f of them taken by the frame's other shadows)",
+                static_cast<double>(frame.pixels[0]), static_cast<double>(largest_pixels),
+                static_cast<double>(taken));
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
+         "': the shadow texels would move its edges beyond their band over about " + pixels +
+         ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
+         "-texel shadow is too coarse for the screen (" +
+         (accepted <= largest_size
+              ? "size " + std::to_string(accepted) + " would be accepted"
+              : "no size up to " + std::to_string(largest_size) + " would be accepted") +
+         "); it casts no shadow from this light";
+}
+
+}  // namespace gs

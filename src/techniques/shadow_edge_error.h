@@ -1,0 +1,78 @@
+// The interior error a projected shadow texture's texels can make along its edges, per edge of
+// the caster's silhouette from the light: where each edge's shadow lands on a receiver polygon,
+// its length on screen times how far beyond the pixels next to it (which the error measure
+// counts as the edge's band, not interior error) the texels move it across itself. The
+// projected technique refuses a shadow whose estimate exceeds 0.1% of the receivers' pixels (with
+// texel_footprint.h's check, which it complements: docs/hard_cases_results.md, "Shadow texels
+// against screen pixels").
+#pragma once
+
+#include "techniques/projection.h"
+#include "techniques/scene_pass.h"
+#include "techniques/texel_footprint.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gs {
+
+// An edge of the caster's silhouette from the light (or its cut by a pierced receiver's plane),
+// world space, as much of it as step 1 draws; the normal (world, not unit) of the caster's face
+// along it that the light sees, and a point of that face off the edge (the texture covers its
+// side of the edge). A cut has a zero normal: neither is known there.
+struct SilhouetteSegment {
+  glm::vec3 a{0.0f}, b{0.0f};
+  glm::vec3 lit_face{0.0f};
+  glm::vec3 face_point{0.0f};
+};
+
+// The share of the receivers' pixels a frame's estimate may reach: the 0.1% interior-error
+// budget, as the estimate is near the error measured against the truth
+// (docs/hard_cases_results.md).
+inline constexpr float kEdgeErrorReceiverShare = 0.001f;
+
+// The screen pixels (Glide screen) of the receivers' triangles that face the camera, the parts
+// before it, clipped to the screen, at most the screen's: the budget's base. Receivers
+// overlapping on screen count twice.
+float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame);
+
+// Estimated interior error (wrong pixels beyond an edge's band), for the texture as it is and at
+// 2, 4 and 8 times its side (the texels halve with each doubling), so that a refusal can name
+// the size that would be accepted.
+struct EdgeErrorEstimate {
+  static constexpr int kSizes = 4;
+  float pixels[kSizes] = {};
+  void add(const EdgeErrorEstimate &other) {
+    for (int k = 0; k < kSizes; ++k) pixels[k] += other.pixels[k];
+  }
+};
+
+// Adds to `estimate` the error along the shadows that `segments[candidates]` throw from
+// `light_position` (world) onto the convex planar receiver polygon `polygon` (world positions,
+// its unit normal `normal` facing the light, already clipped to where the shadow's edge can
+// fall: texel_footprint). Along each shadow edge the texture's edge (where the filtered alpha
+// is half: `bilinear`, or the nearest texel's) is found from the texel centres the caster
+// covers next to it, and its distance from the true edge taken to the screen across the edge.
+// A shadow edge where the caster touches the receiver lies under the caster, where no true
+// edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
+// from under the caster counts where the camera (world) sees past the caster's lit face.
+void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
+                           const glm::vec3 &camera_position, const glm::vec3 &normal,
+                           const std::vector<ClipVertex> &polygon,
+                           const std::vector<SilhouetteSegment> &segments,
+                           const std::vector<std::size_t> &candidates, bool bilinear,
+                           EdgeErrorEstimate &estimate);
+
+// The refusal of a shadow whose edges would stray too far (the projected techniques'), naming
+// the light, the caster, the receiver with the most of the error, the estimate (`frame`: the
+// frame's with this shadow's, `taken` of it by the shadows before) against the most accepted
+// (pixels), and the smallest size up to `largest_size` that would be accepted.
+std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
+                                      std::size_t receiver, float taken,
+                                      const EdgeErrorEstimate &frame, float largest_pixels,
+                                      int size, int largest_size);
+
+}  // namespace gs
