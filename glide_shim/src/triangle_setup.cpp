@@ -1,0 +1,181 @@
+// grDrawTriangle's vertex work for a whole triangle at once, with to_shim_vertex's bits: the
+// NaN/infinity probe as one bit mask over each vertex's first 12 floats, the 12.4 snap of the
+// six screen coordinates on four lanes at a time, and one branch per field a triangle, not
+// one per vertex. The context keeps fields_read's answer until a flush marks it stale.
+#include "draw.h"
+
+#include "depth.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+namespace glide_shim {
+namespace {
+
+// Four lanes of floats or of 32-bit integers (GCC's and Clang's vector extensions; SSE2 on
+// x86-64): a comparison gives -1 in each lane where it holds, 0 elsewhere.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+
+static_assert(offsetof(GrVertex, tmuvtx[0].oow) == (kCheckedVertexFloats - 1) * sizeof(float),
+              "the checks read GrVertex's first 12 floats as x y z r g b ooz a oow sow tow oow");
+
+Int4 bits_of(Float4 v) {
+  Int4 b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+Float4 float_of(Int4 b) {
+  Float4 v;
+  std::memcpy(&v, &b, sizeof v);
+  return v;
+}
+
+// The six screen coordinates in the Glide origin (a.x a.y b.x b.y, then c.x c.y twice), less
+// the 3<<18 snap offset where a program left it on (draw.cpp's remove_snap_offset): v - 0
+// keeps every other value, signed zeros included.
+struct Positions {
+  Float4 ab, cc;
+};
+
+Float4 without_snap_offset(Float4 v) {
+  const Int4 in_window = (v >= kSnapOffset - 4096.0f) & (v < kSnapOffset + 4096.0f);
+  return v - float_of(bits_of(Float4{} + kSnapOffset) & in_window);
+}
+
+Positions positions_of(const GrVertex &a, const GrVertex &b, const GrVertex &c) {
+  return {without_snap_offset(Float4{a.x, a.y, b.x, b.y}),
+          without_snap_offset(Float4{c.x, c.y, c.x, c.y})};
+}
+
+// draw.cpp's snap_checked on four lanes, for |v| <= 32768: the product by 16 is exact, so is its
+// truncation and the fraction left; a fraction of at least one half steps away from zero; the
+// result takes the product's sign, so a negative zero stays negative.
+Float4 snapped(Float4 v) {
+  const Float4 scaled = v * 16.0f;
+  const Int4 whole = __builtin_convertvector(scaled, Int4);
+  const Float4 fraction = scaled - __builtin_convertvector(whole, Float4);
+  const Int4 rounded = whole - (fraction >= 0.5f) + (fraction <= -0.5f);
+  const Float4 magnitude = __builtin_convertvector(rounded, Float4) * 0.0625f;
+  const Int4 sign = Int4{} + INT32_MIN;
+  return float_of((bits_of(magnitude) & ~sign) | (bits_of(scaled) & sign));
+}
+
+using Word4 = std::uint32_t __attribute__((vector_size(16)));
+
+Word4 load_words(const void *from) {
+  Word4 words;
+  std::memcpy(&words, from, sizeof words);
+  return words;
+}
+
+// True when no float the state reads, of the three vertices, is NaN or infinite (such a float
+// has all exponent bits set, and adding one to that exponent field carries into the sign bit)
+// and the six coordinates are within the setup range (a NaN compares false there too).
+[[gnu::always_inline]] inline bool checks_pass(const VertexFields &fields, const GrVertex &a,
+                                               const GrVertex &b, const GrVertex &c,
+                                               const Positions &p) {
+  static_assert(sizeof fields.checked_exponents == 3 * sizeof(Word4), "three vectors of four");
+  const Word4 checked[3] = {load_words(&fields.checked_exponents[0]),
+                            load_words(&fields.checked_exponents[4]),
+                            load_words(&fields.checked_exponents[8])};
+  const auto carries = [&checked](const GrVertex &v) {
+    const float *f = &v.x;
+    return ((load_words(f) & checked[0]) + 0x00800000u) |
+           ((load_words(f + 4) & checked[1]) + 0x00800000u) |
+           ((load_words(f + 8) & checked[2]) + 0x00800000u);
+  };
+  const Int4 magnitude_mask = Int4{} + 0x7FFFFFFF;
+  const Float4 limit = Float4{} + kMaxScreenCoordinate;
+  const Int4 in_range = (float_of(bits_of(p.ab) & magnitude_mask) <= limit) &
+                        (float_of(bits_of(p.cc) & magnitude_mask) <= limit);
+  Word4 failed = carries(a) | carries(b) | carries(c) | ~reinterpret_cast<const Word4 &>(in_range);
+  failed |= __builtin_shufflevector(failed, failed, 2, 3, 0, 1);
+  failed |= __builtin_shufflevector(failed, failed, 1, 0, 3, 2);
+  return (failed[0] & 0x80000000u) == 0;
+}
+
+[[gnu::always_inline]] inline void convert(const VertexFields &fields, const GrVertex &a,
+                                           const GrVertex &b, const GrVertex &c,
+                                           const Positions &p, ShimVertex *out) {
+  const Float4 ab = snapped(p.ab), cc = snapped(p.cc);
+  out[0].x = ab[0], out[0].y = ab[1], out[1].x = ab[2], out[1].y = ab[3];
+  out[2].x = cc[0], out[2].y = cc[1];
+  const GrVertex *in[3] = {&a, &b, &c};
+  switch (fields.depth_source) {
+    case DepthSource::None:
+      for (int k = 0; k < 3; ++k) out[k].depth = 0.0f;
+      break;
+    case DepthSource::UnbiasedW:
+      for (int k = 0; k < 3; ++k) out[k].depth = std::clamp(std::min(in[k]->oow, 1.0f), 0.0f, 1.0f);
+      break;
+    default:
+      for (int k = 0; k < 3; ++k) {
+        out[k].depth = vertex_depth(*fields.depth, fields.ooz ? in[k]->ooz : 0.0f,
+                                    fields.oow ? in[k]->oow : 0.0f);
+      }
+  }
+  if (fields.delta0) {
+    for (int k = 0; k < 3; ++k) {
+      out[k].r = fields.delta0_rgb[0], out[k].g = fields.delta0_rgb[1];
+      out[k].b = fields.delta0_rgb[2];
+    }
+  } else if (fields.rgb) {
+    for (int k = 0; k < 3; ++k) out[k].r = in[k]->r, out[k].g = in[k]->g, out[k].b = in[k]->b;
+  } else {
+    for (int k = 0; k < 3; ++k) out[k].r = out[k].g = out[k].b = 0.0f;
+  }
+  for (int k = 0; k < 3; ++k) out[k].a = fields.alpha ? in[k]->a : 0.0f;
+  switch (fields.fog) {
+    case GR_FOG_WITH_TABLE:
+      for (int k = 0; k < 3; ++k) out[k].fog = in[k]->oow;
+      break;
+    case GR_FOG_WITH_ITERATED_Z:
+      for (int k = 0; k < 3; ++k) out[k].fog = in[k]->ooz;
+      break;
+    default:
+      for (int k = 0; k < 3; ++k) out[k].fog = 0.0f;
+  }
+  if (!fields.texture) {
+    for (int k = 0; k < 3; ++k) out[k].sow = out[k].tow = out[k].q = 0.0f;
+    return;
+  }
+  for (int k = 0; k < 3; ++k) {
+    out[k].sow = in[k]->tmuvtx[0].sow, out[k].tow = in[k]->tmuvtx[0].tow;
+    out[k].q = fields.q_from_tmu ? in[k]->tmuvtx[0].oow : in[k]->oow;
+  }
+}
+
+}  // namespace
+
+const VertexFields &current_vertex_fields(GlideContext &context) {
+  if (context.vertex_fields_stale) {
+    context.vertex_fields = fields_read(context);
+    context.vertex_fields_stale = false;
+  }
+  return context.vertex_fields;
+}
+
+bool triangle_is_valid(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
+                       const GrVertex &c) {
+  return checks_pass(fields, a, b, c, positions_of(a, b, c));
+}
+
+void convert_triangle(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
+                      const GrVertex &c, ShimVertex *out) {
+  convert(fields, a, b, c, positions_of(a, b, c), out);
+}
+
+ShimVertex *queue_checked_triangle(GlRenderer &renderer, const VertexFields &fields,
+                                   const GrVertex &a, const GrVertex &b, const GrVertex &c) {
+  const Positions positions = positions_of(a, b, c);
+  if (!checks_pass(fields, a, b, c, positions)) return nullptr;
+  ShimVertex *out = renderer.queue_space(Primitive::Triangles, 3);
+  convert(fields, a, b, c, positions, out);
+  return out;
+}
+
+}  // namespace glide_shim
