@@ -46,9 +46,25 @@ Float4 without_snap_offset(Float4 v) {
   return v - float_of(bits_of(Float4{} + kSnapOffset) & in_window);
 }
 
-Positions positions_of(const GrVertex &a, const GrVertex &b, const GrVertex &c) {
-  return {without_snap_offset(Float4{a.x, a.y, b.x, b.y}),
-          without_snap_offset(Float4{c.x, c.y, c.x, c.y})};
+bool all_lanes(Int4 condition) {
+  condition &= __builtin_shufflevector(condition, condition, 2, 3, 0, 1);
+  condition &= __builtin_shufflevector(condition, condition, 1, 0, 3, 2);
+  return condition[0] != 0;
+}
+
+// |v| <= 32768 in each lane (false for NaN).
+Int4 in_setup_range(Float4 v) {
+  return float_of(bits_of(v) & 0x7FFFFFFF) <= kMaxScreenCoordinate;
+}
+
+// The positions, and whether all six are within the setup range. A coordinate within it is not
+// in the offset's window, so most triangles have nothing to remove.
+[[gnu::always_inline]] inline bool positions_in_range(const GrVertex &a, const GrVertex &b,
+                                                     const GrVertex &c, Positions &p) {
+  p = {Float4{a.x, a.y, b.x, b.y}, Float4{c.x, c.y, c.x, c.y}};
+  if (all_lanes(in_setup_range(p.ab) & in_setup_range(p.cc))) return true;
+  p = {without_snap_offset(p.ab), without_snap_offset(p.cc)};
+  return all_lanes(in_setup_range(p.ab) & in_setup_range(p.cc));
 }
 
 // draw.cpp's snap_checked on four lanes, for |v| <= 32768: the product by 16 is exact, so is its
@@ -72,12 +88,10 @@ Word4 load_words(const void *from) {
   return words;
 }
 
-// True when no float the state reads, of the three vertices, is NaN or infinite (such a float
-// has all exponent bits set, and adding one to that exponent field carries into the sign bit)
-// and the six coordinates are within the setup range (a NaN compares false there too).
-[[gnu::always_inline]] inline bool checks_pass(const VertexFields &fields, const GrVertex &a,
-                                               const GrVertex &b, const GrVertex &c,
-                                               const Positions &p) {
+// True when no float the state reads, of the three vertices, is NaN or infinite: such a float
+// has all exponent bits set, and adding one to that exponent field carries into the sign bit.
+[[gnu::always_inline]] inline bool all_finite(const VertexFields &fields, const GrVertex &a,
+                                              const GrVertex &b, const GrVertex &c) {
   static_assert(sizeof fields.checked_exponents == 3 * sizeof(Word4), "three vectors of four");
   const Word4 checked[3] = {load_words(&fields.checked_exponents[0]),
                             load_words(&fields.checked_exponents[4]),
@@ -88,11 +102,7 @@ Word4 load_words(const void *from) {
            ((load_words(f + 4) & checked[1]) + 0x00800000u) |
            ((load_words(f + 8) & checked[2]) + 0x00800000u);
   };
-  const Int4 magnitude_mask = Int4{} + 0x7FFFFFFF;
-  const Float4 limit = Float4{} + kMaxScreenCoordinate;
-  const Int4 in_range = (float_of(bits_of(p.ab) & magnitude_mask) <= limit) &
-                        (float_of(bits_of(p.cc) & magnitude_mask) <= limit);
-  Word4 failed = carries(a) | carries(b) | carries(c) | ~reinterpret_cast<const Word4 &>(in_range);
+  Word4 failed = carries(a) | carries(b) | carries(c);
   failed |= __builtin_shufflevector(failed, failed, 2, 3, 0, 1);
   failed |= __builtin_shufflevector(failed, failed, 1, 0, 3, 2);
   return (failed[0] & 0x80000000u) == 0;
@@ -161,18 +171,21 @@ const VertexFields &current_vertex_fields(GlideContext &context) {
 
 bool triangle_is_valid(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
                        const GrVertex &c) {
-  return checks_pass(fields, a, b, c, positions_of(a, b, c));
+  Positions positions;
+  return all_finite(fields, a, b, c) && positions_in_range(a, b, c, positions);
 }
 
 void convert_triangle(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
                       const GrVertex &c, ShimVertex *out) {
-  convert(fields, a, b, c, positions_of(a, b, c), out);
+  Positions positions;
+  positions_in_range(a, b, c, positions);
+  convert(fields, a, b, c, positions, out);
 }
 
 ShimVertex *queue_checked_triangle(GlRenderer &renderer, const VertexFields &fields,
                                    const GrVertex &a, const GrVertex &b, const GrVertex &c) {
-  const Positions positions = positions_of(a, b, c);
-  if (!checks_pass(fields, a, b, c, positions)) return nullptr;
+  Positions positions;
+  if (!all_finite(fields, a, b, c) || !positions_in_range(a, b, c, positions)) return nullptr;
   ShimVertex *out = renderer.queue_space(Primitive::Triangles, 3);
   convert(fields, a, b, c, positions, out);
   return out;
