@@ -114,48 +114,56 @@ Word4 load_words(const void *from) {
   const Float4 ab = snapped(p.ab), cc = snapped(p.cc);
   out[0].x = ab[0], out[0].y = ab[1], out[1].x = ab[2], out[1].y = ab[3];
   out[2].x = cc[0], out[2].y = cc[1];
-  const GrVertex *in[3] = {&a, &b, &c};
+  // `write` for each vertex and its output, unrolled, the field choices made once.
+  const auto each = [&](auto write) { write(a, out[0]), write(b, out[1]), write(c, out[2]); };
   switch (fields.depth_source) {
     case DepthSource::None:
-      for (int k = 0; k < 3; ++k) out[k].depth = 0.0f;
+      each([](const GrVertex &, ShimVertex &o) { o.depth = 0.0f; });
       break;
     case DepthSource::UnbiasedW:
-      for (int k = 0; k < 3; ++k) out[k].depth = std::clamp(std::min(in[k]->oow, 1.0f), 0.0f, 1.0f);
+      each([](const GrVertex &v, ShimVertex &o) {
+        o.depth = std::clamp(std::min(v.oow, 1.0f), 0.0f, 1.0f);
+      });
       break;
     default:
-      for (int k = 0; k < 3; ++k) {
-        out[k].depth = vertex_depth(*fields.depth, fields.ooz ? in[k]->ooz : 0.0f,
-                                    fields.oow ? in[k]->oow : 0.0f);
-      }
+      each([&fields](const GrVertex &v, ShimVertex &o) {
+        o.depth = vertex_depth(*fields.depth, fields.ooz ? v.ooz : 0.0f, fields.oow ? v.oow : 0.0f);
+      });
   }
   if (fields.delta0) {
-    for (int k = 0; k < 3; ++k) {
-      out[k].r = fields.delta0_rgb[0], out[k].g = fields.delta0_rgb[1];
-      out[k].b = fields.delta0_rgb[2];
-    }
+    each([&fields](const GrVertex &, ShimVertex &o) {
+      o.r = fields.delta0_rgb[0], o.g = fields.delta0_rgb[1], o.b = fields.delta0_rgb[2];
+    });
   } else if (fields.rgb) {
-    for (int k = 0; k < 3; ++k) out[k].r = in[k]->r, out[k].g = in[k]->g, out[k].b = in[k]->b;
+    each([](const GrVertex &v, ShimVertex &o) { o.r = v.r, o.g = v.g, o.b = v.b; });
   } else {
-    for (int k = 0; k < 3; ++k) out[k].r = out[k].g = out[k].b = 0.0f;
+    each([](const GrVertex &, ShimVertex &o) { o.r = o.g = o.b = 0.0f; });
   }
-  for (int k = 0; k < 3; ++k) out[k].a = fields.alpha ? in[k]->a : 0.0f;
+  if (fields.alpha) {
+    each([](const GrVertex &v, ShimVertex &o) { o.a = v.a; });
+  } else {
+    each([](const GrVertex &, ShimVertex &o) { o.a = 0.0f; });
+  }
   switch (fields.fog) {
     case GR_FOG_WITH_TABLE:
-      for (int k = 0; k < 3; ++k) out[k].fog = in[k]->oow;
+      each([](const GrVertex &v, ShimVertex &o) { o.fog = v.oow; });
       break;
     case GR_FOG_WITH_ITERATED_Z:
-      for (int k = 0; k < 3; ++k) out[k].fog = in[k]->ooz;
+      each([](const GrVertex &v, ShimVertex &o) { o.fog = v.ooz; });
       break;
     default:
-      for (int k = 0; k < 3; ++k) out[k].fog = 0.0f;
+      each([](const GrVertex &, ShimVertex &o) { o.fog = 0.0f; });
   }
   if (!fields.texture) {
-    for (int k = 0; k < 3; ++k) out[k].sow = out[k].tow = out[k].q = 0.0f;
-    return;
-  }
-  for (int k = 0; k < 3; ++k) {
-    out[k].sow = in[k]->tmuvtx[0].sow, out[k].tow = in[k]->tmuvtx[0].tow;
-    out[k].q = fields.q_from_tmu ? in[k]->tmuvtx[0].oow : in[k]->oow;
+    each([](const GrVertex &, ShimVertex &o) { o.sow = o.tow = o.q = 0.0f; });
+  } else if (fields.q_from_tmu) {
+    each([](const GrVertex &v, ShimVertex &o) {
+      o.sow = v.tmuvtx[0].sow, o.tow = v.tmuvtx[0].tow, o.q = v.tmuvtx[0].oow;
+    });
+  } else {
+    each([](const GrVertex &v, ShimVertex &o) {
+      o.sow = v.tmuvtx[0].sow, o.tow = v.tmuvtx[0].tow, o.q = v.oow;
+    });
   }
 }
 
