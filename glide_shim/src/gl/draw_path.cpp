@@ -205,15 +205,15 @@ void GlRenderer::flush() {
 
   const GLsizei stride = sizeof(ShimVertex);
   const char *base = reinterpret_cast<const char *>(queue_.data());
-  static_assert(offsetof(ShimVertex, depth) == offsetof(ShimVertex, x) + 2 * sizeof(float),
-                "a_position reads x, y, depth as one vec3");
-  gl.glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, stride,
+  gl.glVertexAttribPointer(kPosition, 2, GL_FLOAT, GL_FALSE, stride,
                            base + offsetof(ShimVertex, x));
+  gl.glVertexAttribPointer(kDepth, 1, GL_FLOAT, GL_FALSE, stride,
+                           base + offsetof(ShimVertex, depth));
   gl.glVertexAttribPointer(kColor, 4, GL_FLOAT, GL_FALSE, stride, base + offsetof(ShimVertex, r));
   gl.glVertexAttribPointer(kStq, 3, GL_FLOAT, GL_FALSE, stride,
                            base + offsetof(ShimVertex, sow));
   gl.glVertexAttribPointer(kFog, 1, GL_FLOAT, GL_FALSE, stride, base + offsetof(ShimVertex, fog));
-  for (unsigned attribute : {kPosition, kColor, kStq, kFog}) {
+  for (unsigned attribute : {kPosition, kDepth, kColor, kStq, kFog}) {
     gl.glEnableVertexAttribArray(attribute);
   }
   const GLenum mode = primitive_ == Primitive::Triangles ? GL_TRIANGLES

@@ -103,7 +103,7 @@ void GlRenderer::begin_plain_gl() {
   gl.glBindTexture(GL_TEXTURE_2D, 0);
   // The shim's generic attribute arrays point into its vertex queue; attribute 0 would override
   // the caller's glVertexPointer. flush() enables them again before the next Glide draw.
-  for (unsigned attribute : {kPosition, kColor, kStq, kFog}) {
+  for (unsigned attribute : {kPosition, kDepth, kColor, kStq, kFog}) {
     gl.glDisableVertexAttribArray(attribute);
   }
   for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_SCISSOR_TEST}) {

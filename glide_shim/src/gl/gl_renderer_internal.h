@@ -10,9 +10,7 @@
 namespace glide_shim {
 namespace gl_internal {
 
-// The vertex shader's attributes. kPosition holds x, y and the depth, which ShimVertex keeps
-// side by side: one attribute fewer for llvmpipe to fetch per vertex.
-enum Attribute : unsigned { kPosition = 0, kColor = 1, kStq = 2, kFog = 3 };
+enum Attribute : unsigned { kPosition = 0, kDepth = 1, kColor = 2, kStq = 3, kFog = 4 };
 
 // One compiled shader stage, or 0 with `error` set (the compiler's log).
 unsigned compile(const GlFunctions &gl, GLenum stage, const std::string &source,

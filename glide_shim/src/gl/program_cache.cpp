@@ -61,6 +61,7 @@ const ShaderProgram *GlRenderer::program_for(const PipelineKey &key, const std::
   gl.glAttachShader(program.program, vs);
   gl.glAttachShader(program.program, fs);
   gl.glBindAttribLocation(program.program, kPosition, "a_position");
+  gl.glBindAttribLocation(program.program, kDepth, "a_depth");
   gl.glBindAttribLocation(program.program, kColor, "a_color");
   gl.glBindAttribLocation(program.program, kStq, "a_stq");
   gl.glBindAttribLocation(program.program, kFog, "a_fog");

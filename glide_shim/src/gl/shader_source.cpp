@@ -65,7 +65,8 @@ uniform float u_level_scale;
 uniform vec2 u_lod_range;
 flat out vec4 v_level_flat;  // u_level.yz (width, height), u_level_scale, u_lod_range.x
 )" : "#version 120\n";
-  s += R"(attribute vec3 a_position;  // screen pixels in the Glide origin, then GL window depth 0..1
+  s += R"(attribute vec2 a_position;  // screen pixels in the Glide origin
+attribute float a_depth;    // GL window depth, 0..1
 attribute vec4 a_color;     // 0..255
 attribute vec3 a_stq;       // sow, tow, divisor
 attribute float a_fog;      // fog iterator: 1/w (table fog) or ooz (iterated-Z fog)
@@ -76,9 +77,9 @@ varying vec3 v_stq;
 varying float v_fog;
 varying float v_row;  // rows from the target's top, row + 0.5 at a pixel centre (fast dither)
 void main() {
-  vec2 ndc = a_position.xy * 2.0 / u_screen - 1.0;
+  vec2 ndc = a_position * 2.0 / u_screen - 1.0;
   if (u_y_down > 0.5) ndc.y = -ndc.y;
-  gl_Position = vec4(ndc, a_position.z * 2.0 - 1.0, 1.0);
+  gl_Position = vec4(ndc, a_depth * 2.0 - 1.0, 1.0);
   // Exact: a snapped y (a multiple of 1/16, |y| <= 32768) and height - y are floats.
   v_row = u_y_down > 0.5 ? a_position.y : u_screen.y - a_position.y;
   v_color = a_color;
