@@ -19,6 +19,7 @@ GlideContext &current() {
 
 void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t format,
                                         GrOriginLocation_t origin) {
+  vertex_fields_stale = true;
   // Colour path: vertex colour through, constant alpha (gsst.c's grSstWinOpen).
   color_path.color = {GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_ONE,
                       GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_ITERATED, false};
@@ -87,6 +88,7 @@ void GlideContext::load_window_defaults(int width, int height, GrColorFormat_t f
 }
 
 void GlideContext::flush() {
+  vertex_fields_stale = true;  // the state that fields_read reads may change next
   if (renderer) renderer->flush();
 }
 

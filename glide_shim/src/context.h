@@ -8,6 +8,7 @@
 #include <glideutl.h>
 
 #include "glide_shim.h"
+#include "vertex_fields.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -250,6 +251,10 @@ class GlideContext {
   int fidelity_knobs = 0;
   ErrorState errors{};
   std::unique_ptr<GlRenderer> renderer;
+  // fields_read(*this), kept for grDrawTriangle until it goes stale: every entry point flushes
+  // the queue before it changes the state fields_read reads, and a flush marks it stale.
+  VertexFields vertex_fields{};
+  bool vertex_fields_stale = true;
 
   // Loads the defaults grSstWinOpen establishes (gsst.c), group by group.
   void load_window_defaults(int width, int height, GrColorFormat_t format, GrOriginLocation_t o);
@@ -258,7 +263,10 @@ class GlideContext {
   // or, with none installed, printed to stderr unless printed before or GLIDESHIM_QUIET is set.
   void report(GlideShimError kind, const std::string &message);
   // Guard for entry points that need an open window; reports and returns false otherwise.
-  bool require_open(const char *function);
+  bool require_open(const char *function) {
+    return (!plain_gl && initialized && display.open) || refuse_closed(function);
+  }
+  bool refuse_closed(const char *function);  // require_open's report; always false
   // Draws queued triangles before a state change; a no-op before grSstWinOpen.
   void flush();
 };

@@ -15,10 +15,6 @@
 namespace glide_shim {
 namespace {
 
-// Programs that snap with the 3<<18 float trick sometimes never subtract it; the hardware
-// keeps only the low bits, so neither does the shim (as OpenGLide does).
-constexpr float kSnapOffset = 786432.0f;
-
 float remove_snap_offset(float v) {
   return (v >= kSnapOffset - 4096.0f && v < kSnapOffset + 4096.0f) ? v - kSnapOffset : v;
 }
@@ -75,6 +71,14 @@ VertexFields fields_read(const GlideContext &context) {
   fields.depth_source = depth_mode == GR_DEPTHBUFFER_DISABLE            ? DepthSource::None
                         : is_w_buffer(depth_mode) && unbiased ? DepthSource::UnbiasedW
                                                                         : DepthSource::General;
+  // The floats vertex_is_valid probes, by their index in GrVertex (see kCheckedVertexFloats).
+  const bool checked[kCheckedVertexFloats] = {true,          true,         false,        fields.rgb,
+                                              fields.rgb,    fields.rgb,   fields.ooz,   fields.alpha,
+                                              fields.oow,    fields.texture, fields.texture,
+                                              fields.texture};
+  for (int i = 0; i < kCheckedVertexFloats; ++i) {
+    fields.checked_exponents[i] = checked[i] ? 0x7F800000u : 0u;
+  }
   return fields;
 }
 
@@ -295,18 +299,16 @@ void grDrawTriangle(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "grDrawTriangle: a vertex pointer is NULL");
     return;
   }
-  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
-  constexpr float kMax = glide_shim::kMaxScreenCoordinate;
-  if (!glide_shim::vertex_is_valid(ctx, fields, *a, "grDrawTriangle", kMax) ||
-      !glide_shim::vertex_is_valid(ctx, fields, *b, "grDrawTriangle", kMax) ||
-      !glide_shim::vertex_is_valid(ctx, fields, *c, "grDrawTriangle", kMax)) {
+  const glide_shim::VertexFields &fields = glide_shim::current_vertex_fields(ctx);
+  // Checked before the queue grows (an error callback may flush): the vertices go straight in.
+  glide_shim::ShimVertex *v = glide_shim::queue_checked_triangle(*ctx.renderer, fields, *a, *b, *c);
+  if (v == nullptr) {
+    // The same checks vertex by vertex find the first bad vertex and report it.
+    for (const GrVertex *vertex : {a, b, c}) {
+      if (!glide_shim::check_vertex(ctx, fields, *vertex, "grDrawTriangle")) return;
+    }
     return;
   }
-  // Checked (and any error callback run) before the queue grows: the vertices go straight in.
-  glide_shim::ShimVertex *v = ctx.renderer->queue_space(glide_shim::Primitive::Triangles, 3);
-  glide_shim::convert_vertex(fields, *a, v[0]);
-  glide_shim::convert_vertex(fields, *b, v[1]);
-  glide_shim::convert_vertex(fields, *c, v[2]);
   if (!glide_shim::keeps_triangle(ctx, v[0], v[1], v[2])) ctx.renderer->unqueue(3);
 }
 

@@ -4,29 +4,21 @@
 
 #include "context.h"
 #include "gl/gl_renderer.h"
+#include "vertex_fields.h"
 
 #include <vector>
 
 namespace glide_shim {
 
-// How a vertex's GL depth is formed: none (depth buffering off: 0), the W-buffer's 1/w with
-// no bias (clamped to 0..1), or vertex_depth's general case (a Z-buffer, a biased W-buffer).
-enum class DepthSource { None, UnbiasedW, General };
-
-struct VertexFields {  // which GrVertex fields the current state reads, and how it reads them
-  bool rgb, alpha, ooz, oow, texture;
-  GrFogMode_t fog;  // the fog source: table fog reads oow, iterated-Z fog ooz, iterated alpha a
-  bool delta0;      // the RGB iterators hold delta0_rgb (guColorCombineFunction's *_DELTA0)
-  float delta0_rgb[3];
-  bool q_from_tmu;  // GR_STWHINT_W_DIFF_TMU0: the texture divisor is tmuvtx[0].oow, not oow
-  DepthSource depth_source;
-  const DepthState *depth;  // the context's, for DepthSource::General
-};
-
 VertexFields fields_read(const GlideContext &context);
 
 // The largest |x| or |y| the rasteriser takes: Glide's 12.4 fixed-point setup range.
 constexpr float kMaxScreenCoordinate = 32768.0f;
+
+// Programs that snap with the 3<<18 float trick sometimes never subtract it; the hardware
+// keeps only the low bits, so neither does the shim (as OpenGLide does): a coordinate within
+// 4096 of this offset is taken less it.
+constexpr float kSnapOffset = 786432.0f;
 
 // The most vertices a polygon call takes. Glide sets no maximum; a count beyond this is a
 // corrupt argument, not a polygon, and would otherwise be allocated and read before any check.
@@ -44,6 +36,20 @@ bool to_shim_vertex(GlideContext &context, const VertexFields &fields, const GrV
 bool check_vertex(GlideContext &context, const VertexFields &fields, const GrVertex &in,
                   const char *function, float max_coordinate = kMaxScreenCoordinate);
 void write_vertex(const VertexFields &fields, const GrVertex &in, ShimVertex &out);
+
+// fields_read(context), recomputed only when a flush has marked the context's copy stale.
+const VertexFields &current_vertex_fields(GlideContext &context);
+// check_vertex and write_vertex for a triangle at once, with the same results: true when all
+// three vertices pass the checks (none reported: check_vertex tells which failed), and the
+// three converted vertices.
+bool triangle_is_valid(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
+                       const GrVertex &c);
+void convert_triangle(const VertexFields &fields, const GrVertex &a, const GrVertex &b,
+                      const GrVertex &c, ShimVertex *out);
+// Both at once: the three converted vertices queued as a triangle when the checks pass, else
+// null with nothing queued or reported.
+ShimVertex *queue_checked_triangle(GlRenderer &renderer, const VertexFields &fields,
+                                   const GrVertex &a, const GrVertex &b, const GrVertex &c);
 
 // False for a triangle that is not drawn: zero signed area of the snapped vertices, or culled.
 // Counts it for grSstPerfStats.

@@ -73,13 +73,12 @@ void GlideContext::report(GlideShimError kind, const std::string &message) {
                glide_shim_api::glideShimErrorName(kind));
 }
 
-bool GlideContext::require_open(const char *function) {
+bool GlideContext::refuse_closed(const char *function) {
   if (plain_gl) {
     report(GLIDESHIM_ERR_INCONSISTENT, std::string(function) +
                                            ": Glide calls wait for glideShimEndGL (plain GL is begun)");
     return false;
   }
-  if (initialized && display.open) return true;
   report(GLIDESHIM_ERR_NOT_INITIALIZED,
          std::string(function) + ": no window is open (call grGlideInit and grSstWinOpen first)");
   return false;

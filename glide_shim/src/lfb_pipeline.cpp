@@ -43,6 +43,7 @@ class PipelineState {
     }
   }
   ~PipelineState() {
+    context_.vertex_fields_stale = true;
     context_.color_path = color_path_;
     context_.depth = depth_;
     context_.raster = raster_;

@@ -185,6 +185,7 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
 }
 
 void GlRenderer::flush() {
+  context_.vertex_fields_stale = true;  // a state change may follow (see GlideContext)
   if (queue_.empty()) return;
   const GlFunctions &gl = backend_->gl;
   PipelineKey key = pipeline_key(context_, context_.fast_paths);
