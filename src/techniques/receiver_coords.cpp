@@ -36,6 +36,63 @@ void texel_box(const LightView &view, const glm::vec4 *light_clip, std::size_t c
   }
 }
 
+// The silhouette segments' boxes in the texture (light screen, texels; low x, low y, high x,
+// high y), bucketed by a 16x16 grid of cells so that a receiver polygon tests only the segments
+// in the cells its own box overlaps (a fighter's silhouette has hundreds of segments, and each
+// of its receiver triangles asked every one). Boxes and cells are clamped to the texture's edge
+// cells alike, so two boxes that overlap share a cell; a NaN box overlaps nothing.
+class SegmentGrid {
+ public:
+  SegmentGrid(float texels, std::vector<glm::vec4> boxes)
+      : cell_(texels / static_cast<float>(kSide)), boxes_(std::move(boxes)),
+        cells_(static_cast<std::size_t>(kSide * kSide)), stamp_(boxes_.size(), 0) {
+    for (std::size_t k = 0; k < boxes_.size(); ++k) {
+      int x0, y0, x1, y1;
+      if (!cell_range(boxes_[k], x0, y0, x1, y1)) continue;
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) cells_[static_cast<std::size_t>(y * kSide + x)].push_back(k);
+      }
+    }
+  }
+
+  // The segments whose boxes overlap [low, high], in increasing order (as a scan would list
+  // them, so the error's sum adds them in the same order).
+  void overlapping(const glm::vec2 &low, const glm::vec2 &high, std::vector<std::size_t> &out) {
+    out.clear();
+    const glm::vec4 query(low, high);
+    int x0, y0, x1, y1;
+    if (!cell_range(query, x0, y0, x1, y1)) return;
+    ++query_;
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        for (std::size_t k : cells_[static_cast<std::size_t>(y * kSide + x)]) {
+          if (stamp_[k] == query_) continue;
+          stamp_[k] = query_;
+          const glm::vec4 &box = boxes_[k];
+          if (box.x <= high.x && box.z >= low.x && box.y <= high.y && box.w >= low.y) out.push_back(k);
+        }
+      }
+    }
+    std::sort(out.begin(), out.end());
+  }
+
+ private:
+  static constexpr int kSide = 16;
+  bool cell_range(const glm::vec4 &box, int &x0, int &y0, int &x1, int &y1) const {
+    if (std::isnan(box.x) || std::isnan(box.y) || std::isnan(box.z) || std::isnan(box.w)) return false;
+    auto index = [&](float texels) {
+      return static_cast<int>(std::clamp(std::floor(texels / cell_), 0.0f, kSide - 1.0f));
+    };
+    x0 = index(box.x), y0 = index(box.y), x1 = index(box.z), y1 = index(box.w);
+    return true;
+  }
+  float cell_;
+  std::vector<glm::vec4> boxes_;
+  std::vector<std::vector<std::size_t>> cells_;
+  std::vector<unsigned> stamp_;  // the last query that listed each segment
+  unsigned query_ = 0;
+};
+
 // Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
 // the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
 // its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
@@ -211,7 +268,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   std::vector<glm::vec4> footprint_planes;
   // The silhouette segments' boxes in the texture (light screen, texels; the whole plane for a
   // segment reaching behind the light), to pick those that can land on a polygon.
-  std::vector<glm::vec4> segment_boxes;  // low x, low y, high x, high y
+  std::vector<glm::vec4> segment_boxes;
   for (const SilhouetteSegment &segment : view.silhouette_segments) {
     glm::vec2 low(-INFINITY), high(INFINITY);
     const glm::vec4 ends[2] = {light_clip * glm::vec4(segment.a, 1.0f),
@@ -219,6 +276,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     if (ends[0].w > 0.0f && ends[1].w > 0.0f) texel_box(view, ends, 2, low, high);
     segment_boxes.emplace_back(low, high);
   }
+  SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
   std::vector<std::size_t> candidates;
   EdgeErrorEstimate receiver_edge_error;  // of the receiver in hand
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
@@ -248,11 +306,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       texel_box(view, &clip, 1, box_low, box_high);
       low = glm::min(low, box_low - 1.0f), high = glm::max(high, box_high + 1.0f);
     }
-    candidates.clear();
-    for (std::size_t k = 0; k < segment_boxes.size(); ++k) {
-      const glm::vec4 &box = segment_boxes[k];
-      if (box.x <= high.x && box.z >= low.x && box.y <= high.y && box.w >= low.y) candidates.push_back(k);
-    }
+    segment_grid.overlapping(low, high, candidates);
     add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
                           view.silhouette_segments, candidates,
                           options.bilinear && !options.chroma_key, receiver_edge_error);
