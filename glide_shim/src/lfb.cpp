@@ -1,12 +1,13 @@
 // Chapter "linear frame buffer": locks and region copies. Reads return the raw 16-bit words the
 // pipeline wrote (565 colour, or depth codes from the aux buffer), always exact, which is what
 // lets a program reinterpret a rendered frame as an ARGB_4444 texture. Written data is decoded as
-// the SST-1 decodes it (MAME's expand_lfb_data) under lfbMode's RGBA lanes, byte swizzle and word
-// swap; direct writes store the colour truncated to 565 and the depth code, and pipelined writes
-// (lfb_pipeline.cpp) run through the pixel pipeline.
+// the SST-1 decodes it (lfb_data.cpp, after MAME's expand_lfb_data) under lfbMode's RGBA lanes,
+// byte swizzle and word swap; direct writes store the colour truncated to 565 and the depth
+// code, and pipelined writes (lfb_pipeline.cpp) run through the pixel pipeline.
 #include "context.h"
 #include "depth.h"
 #include "gl/gl_renderer.h"
+#include "lfb_data.h"
 #include "lfb_pipeline.h"
 
 #include <algorithm>
@@ -14,6 +15,16 @@
 #include <string>
 
 using glide_shim::current;
+using glide_shim::encode_lfb_data;
+using glide_shim::expand_lfb_data;
+using glide_shim::lfb_landing_x;
+using glide_shim::lfb_mode_has_color;
+using glide_shim::lfb_mode_has_depth;
+using glide_shim::lfb_write_mode_bytes;
+using glide_shim::load_lfb_data;
+using glide_shim::store_lfb_data;
+using glide_shim::swizzled_lfb_data;
+using glide_shim::truncate_to_565;
 
 namespace {
 
@@ -58,149 +69,6 @@ void read_words(GrBuffer_t buffer, int x, int y, int w, int h, std::uint16_t *ds
   }
 }
 
-// Bytes per pixel of an LFB write mode, and what its pixels carry.
-int write_mode_bytes(GrLfbWriteMode_t mode) {
-  return mode == GR_LFBWRITEMODE_888 || mode == GR_LFBWRITEMODE_8888 ||
-                 mode == GR_LFBWRITEMODE_565_DEPTH || mode == GR_LFBWRITEMODE_555_DEPTH ||
-                 mode == GR_LFBWRITEMODE_1555_DEPTH
-             ? 4
-             : 2;
-}
-bool mode_has_color(GrLfbWriteMode_t mode) { return mode != GR_LFBWRITEMODE_ZA16; }
-bool mode_has_depth(GrLfbWriteMode_t mode) {
-  return mode == GR_LFBWRITEMODE_ZA16 || mode == GR_LFBWRITEMODE_565_DEPTH ||
-         mode == GR_LFBWRITEMODE_555_DEPTH || mode == GR_LFBWRITEMODE_1555_DEPTH;
-}
-// The colour-only mode of a mode's colour word: the +DEPTH modes hold it in their low 16 bits.
-GrLfbWriteMode_t color_mode_of(GrLfbWriteMode_t mode) {
-  switch (mode) {
-    case GR_LFBWRITEMODE_565_DEPTH: return GR_LFBWRITEMODE_565;
-    case GR_LFBWRITEMODE_555_DEPTH: return GR_LFBWRITEMODE_555;
-    case GR_LFBWRITEMODE_1555_DEPTH: return GR_LFBWRITEMODE_1555;
-    default: return mode;
-  }
-}
-
-// Where one channel sits in an LFB colour word.
-struct Field {
-  int shift, bits;  // bits 0: the word has no such field
-};
-struct ColorFields {
-  Field r, g, b, a;
-};
-
-// The channel layout of a colour mode under lfbMode's RGBA lanes (grLfbWriteColorFormat), as
-// MAME's expand_lfb_data decodes it: ABGR and BGRA put blue in the high field and red in the
-// low one; RGBA and BGRA move alpha (or the unused bits) below the colour. 565 has no spare bit,
-// so its RGBA is ARGB and its BGRA is ABGR.
-ColorFields color_fields(GrLfbWriteMode_t color_mode, GrColorFormat_t lanes) {
-  const bool blue_high = lanes == GR_COLORFORMAT_ABGR || lanes == GR_COLORFORMAT_BGRA;
-  const bool alpha_low = lanes == GR_COLORFORMAT_RGBA || lanes == GR_COLORFORMAT_BGRA;
-  auto rgb = [blue_high](int base, int red_blue_bits, int green_bits) {
-    const Field low{base, red_blue_bits}, high{base + red_blue_bits + green_bits, red_blue_bits};
-    return ColorFields{blue_high ? low : high, {base + red_blue_bits, green_bits},
-                       blue_high ? high : low, {0, 0}};
-  };
-  switch (color_mode) {
-    case GR_LFBWRITEMODE_565: return rgb(0, 5, 6);
-    case GR_LFBWRITEMODE_555:
-    case GR_LFBWRITEMODE_1555: {
-      ColorFields fields = rgb(alpha_low ? 1 : 0, 5, 5);
-      if (color_mode == GR_LFBWRITEMODE_1555) fields.a = {alpha_low ? 0 : 15, 1};
-      return fields;
-    }
-    default: {  // 888 and 8888: 32-bit words
-      ColorFields fields = rgb(alpha_low ? 8 : 0, 8, 8);
-      if (color_mode == GR_LFBWRITEMODE_8888) fields.a = {alpha_low ? 0 : 24, 8};
-      return fields;
-    }
-  }
-}
-
-// A field widened to 8 bits by bit replication (a 1-bit alpha becomes 0 or 255).
-std::uint8_t widen(std::uint32_t word, Field field) {
-  const std::uint32_t value = (word >> field.shift) & ((1u << field.bits) - 1u);
-  switch (field.bits) {
-    case 1: return value != 0 ? 0xFF : 0;
-    case 5: return static_cast<std::uint8_t>(value << 3 | value >> 2);
-    case 6: return static_cast<std::uint8_t>(value << 2 | value >> 4);
-    default: return static_cast<std::uint8_t>(value);
-  }
-}
-
-// One LFB data word (a 16-bit mode's in the low half) as the hardware expands it: the colour
-// by the lanes, alpha from the data if the mode has alpha, else the constant alpha, and the depth
-// code from the data for ZA16 and the +DEPTH modes (high half), else the constant depth.
-glide_shim::LfbPixel expand(GrLfbWriteMode_t mode, GrColorFormat_t lanes, std::uint32_t data,
-                            GrAlpha_t constant_alpha, FxU16 constant_depth) {
-  glide_shim::LfbPixel pixel{0, 0, {0, 0, 0, constant_alpha}, constant_depth};
-  if (mode == GR_LFBWRITEMODE_ZA16) {
-    pixel.depth = static_cast<FxU16>(data & 0xFFFF);
-    return pixel;
-  }
-  if (mode_has_depth(mode)) pixel.depth = static_cast<FxU16>(data >> 16);
-  const ColorFields fields = color_fields(color_mode_of(mode), lanes);
-  pixel.color.r = widen(data, fields.r);
-  pixel.color.g = widen(data, fields.g);
-  pixel.color.b = widen(data, fields.b);
-  if (fields.a.bits != 0) pixel.color.a = widen(data, fields.a);
-  return pixel;
-}
-
-// The data word that stands for a stored 565 colour and depth code in a mode's layout (alpha
-// full), so a pixel a write lock's program leaves alone is recognised as unchanged.
-std::uint32_t encode(GrLfbWriteMode_t mode, GrColorFormat_t lanes, std::uint16_t word, FxU16 code) {
-  if (mode == GR_LFBWRITEMODE_ZA16) return code;
-  const ColorFields fields = color_fields(color_mode_of(mode), lanes);
-  const Field stored_r{11, 5}, stored_g{5, 6}, stored_b{0, 5};
-  auto put = [](std::uint8_t value, Field field) {
-    return field.bits == 0 ? 0u : static_cast<std::uint32_t>(value >> (8 - field.bits)) << field.shift;
-  };
-  std::uint32_t data = put(widen(word, stored_r), fields.r) | put(widen(word, stored_g), fields.g) |
-                       put(widen(word, stored_b), fields.b) | put(0xFF, fields.a);
-  if (mode_has_depth(mode)) data |= static_cast<std::uint32_t>(code) << 16;
-  return data;
-}
-
-std::uint16_t to_565(const glide_shim::Rgba8 &color) {  // truncation: direct writes do not dither
-  return static_cast<std::uint16_t>((color.r >> 3) << 11 | (color.g >> 2) << 5 | (color.b >> 3));
-}
-
-std::uint32_t load(const std::uint8_t *p, int bytes) {
-  if (bytes == 2) {
-    std::uint16_t word;
-    std::memcpy(&word, p, 2);
-    return word;
-  }
-  std::uint32_t word;
-  std::memcpy(&word, p, 4);
-  return word;
-}
-void store(std::uint32_t value, std::uint8_t *p, int bytes) {
-  if (bytes == 2) {
-    const auto word = static_cast<std::uint16_t>(value);
-    std::memcpy(p, &word, 2);
-  } else {
-    std::memcpy(p, &value, 4);
-  }
-}
-
-// grLfbWriteColorSwizzle on one pixel's data (MAME's internal_lfb_w: the 32-bit bus word is
-// byte-swizzled, then its 16-bit halves swapped). A 16-bit pixel shares its bus word with pixel
-// x ^ 1 of its row, so the swizzle reverses its two bytes and, alone or with the swap alone, moves
-// the data to that partner; both together swizzle it in place. Both steps undo themselves.
-std::uint32_t swizzled(std::uint32_t data, int bytes, const glide_shim::LfbWriteLayout &layout) {
-  if (bytes == 2) {
-    return layout.swizzle_bytes ? ((data & 0xFF) << 8 | (data >> 8 & 0xFF)) : data;
-  }
-  if (layout.swizzle_bytes) {
-    data = (data & 0xFF) << 24 | (data & 0xFF00) << 8 | (data >> 8 & 0xFF00) | data >> 24;
-  }
-  return layout.swap_words ? (data << 16 | data >> 16) : data;
-}
-int landing_x(int x, int bytes, const glide_shim::LfbWriteLayout &layout) {
-  return bytes == 2 && layout.swizzle_bytes != layout.swap_words ? x ^ 1 : x;
-}
 
 // Flips the rows of a whole-screen block (lower-left origin locks).
 void flip_rows(std::vector<std::uint8_t> &bytes, std::size_t row_bytes, int height) {
@@ -232,7 +100,7 @@ void write_direct(GrBuffer_t buffer, bool color, bool depth, int x, int y, int w
       for (int col = 0; col < run; ++col) {
         const glide_shim::LfbPixel &pixel = block[static_cast<std::size_t>(row * w + first + col)];
         const auto i = static_cast<std::size_t>(row * run + col);
-        words[i] = to_565(pixel.color);
+        words[i] = truncate_to_565(pixel.color);
         depths[i] = static_cast<float>(glide_shim::gl_depth_from_code(pixel.depth, w_buffer));
       }
     }
@@ -291,7 +159,7 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
   const GrLfbWriteMode_t mode = writeMode != GR_LFBWRITEMODE_ANY ? writeMode
                                 : buffer == GR_BUFFER_AUXBUFFER  ? GR_LFBWRITEMODE_ZA16
                                                                  : GR_LFBWRITEMODE_565;
-  if (!reading && buffer == GR_BUFFER_AUXBUFFER && mode_has_color(mode)) {
+  if (!reading && buffer == GR_BUFFER_AUXBUFFER && lfb_mode_has_color(mode)) {
     ctx.report(GLIDESHIM_ERR_INVALID_ENUM,
                "grLfbLock: colour write modes lock GR_BUFFER_FRONTBUFFER or GR_BUFFER_BACKBUFFER");
     return FXFALSE;
@@ -317,21 +185,22 @@ FxBool grLfbLock(GrLock_t type, GrBuffer_t buffer, GrLfbWriteMode_t writeMode,
   }
   // A write lock starts from the buffers' contents in the lock's format and write layout, so
   // pixels the program skips are recognised as unchanged at the unlock and survive as they are.
-  const int bytes = write_mode_bytes(mode);
-  std::vector<std::uint16_t> colors(mode_has_color(mode) ? count : 0), codes(mode_has_depth(mode) ? count : 0);
-  if (mode_has_color(mode)) read_words(buffer, 0, 0, w, h, colors.data(), static_cast<std::size_t>(w) * 2);
-  if (mode_has_depth(mode)) read_words(GR_BUFFER_AUXBUFFER, 0, 0, w, h, codes.data(), static_cast<std::size_t>(w) * 2);
+  const int bytes = lfb_write_mode_bytes(mode);
+  std::vector<std::uint16_t> colors(lfb_mode_has_color(mode) ? count : 0), codes(lfb_mode_has_depth(mode) ? count : 0);
+  if (lfb_mode_has_color(mode)) read_words(buffer, 0, 0, w, h, colors.data(), static_cast<std::size_t>(w) * 2);
+  if (lfb_mode_has_depth(mode)) read_words(GR_BUFFER_AUXBUFFER, 0, 0, w, h, codes.data(), static_cast<std::size_t>(w) * 2);
   const glide_shim::LfbWriteLayout &layout = ctx.lfb.layout;
   std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels;
   pixels.assign(count * static_cast<std::size_t>(bytes), 0);
   for (int row = 0; row < h; ++row) {
     for (int slot = 0; slot < w; ++slot) {
       // The slot shows the pixel its data would land on (itself unless the swizzle moves it).
-      const int landing = landing_x(slot, bytes, layout);
+      const int landing = lfb_landing_x(slot, bytes, layout);
       const auto i = static_cast<std::size_t>(row * w + (landing < w ? landing : slot));
-      const std::uint32_t data = encode(mode, layout.color_format, mode_has_color(mode) ? colors[i] : 0,
-                                        mode_has_depth(mode) ? codes[i] : 0);
-      store(swizzled(data, bytes, layout),
+      const std::uint32_t data =
+          encode_lfb_data(mode, layout.color_format, lfb_mode_has_color(mode) ? colors[i] : 0,
+                          lfb_mode_has_depth(mode) ? codes[i] : 0);
+      store_lfb_data(swizzled_lfb_data(data, bytes, layout),
             pixels.data() + static_cast<std::size_t>(row * w + slot) * static_cast<std::size_t>(bytes), bytes);
     }
   }
@@ -364,7 +233,7 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
   if (access == GR_LFB_WRITE_ONLY && ctx.lfb.write_locked && buffer == ctx.lfb.write_buffer) {
     const int w = ctx.display.width, h = ctx.display.height;
     const GrLfbWriteMode_t mode = ctx.lfb.write_mode;
-    const int bytes = write_mode_bytes(mode);
+    const int bytes = lfb_write_mode_bytes(mode);
     const std::size_t row_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(bytes);
     std::vector<std::uint8_t> &pixels = ctx.lfb.write_pixels, &original = ctx.lfb.write_original;
     ctx.lfb.write_locked = false;
@@ -392,10 +261,11 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
       for (int slot = 0; slot < w; ++slot) {
         const std::size_t offset = static_cast<std::size_t>(slot * bytes);
         if (std::memcmp(line + offset, was + offset, static_cast<std::size_t>(bytes)) == 0) continue;
-        const int x = landing_x(slot, bytes, layout);
+        const int x = lfb_landing_x(slot, bytes, layout);
         if (x >= w) continue;  // a 16-bit pixel's partner beyond an odd-width row
-        glide_shim::LfbPixel pixel = expand(mode, layout.color_format, swizzled(load(line + offset, bytes), bytes, layout),
-                                            ctx.lfb.write_alpha, ctx.lfb.write_depth);
+        const std::uint32_t data = swizzled_lfb_data(load_lfb_data(line + offset, bytes), bytes, layout);
+        glide_shim::LfbPixel pixel = expand_lfb_data(mode, layout.color_format, data,
+                                                     ctx.lfb.write_alpha, ctx.lfb.write_depth);
         pixel.x = x, pixel.row = row;
         row_pixels[static_cast<std::size_t>(x)] = pixel;
         row_written[static_cast<std::size_t>(x)] = true;
@@ -403,14 +273,14 @@ FxBool grLfbUnlock(GrLock_t type, GrBuffer_t buffer) {
       }
       if (!any) continue;
       if (!ctx.lfb.write_pipeline) {
-        write_direct(buffer, mode_has_color(mode), mode_has_depth(mode), 0, row, w, 1, row_pixels, row_written);
+        write_direct(buffer, lfb_mode_has_color(mode), lfb_mode_has_depth(mode), 0, row, w, 1, row_pixels, row_written);
         continue;
       }
       for (int x = 0; x < w; ++x) {
         if (row_written[static_cast<std::size_t>(x)]) written.push_back(row_pixels[static_cast<std::size_t>(x)]);
       }
     }
-    if (ctx.lfb.write_pipeline) glide_shim::write_through_pipeline(ctx, buffer, mode_has_color(mode), written);
+    if (ctx.lfb.write_pipeline) glide_shim::write_through_pipeline(ctx, buffer, lfb_mode_has_color(mode), written);
     return FXTRUE;
   }
   ctx.report(GLIDESHIM_ERR_INCONSISTENT, "grLfbUnlock: no such lock is held");
@@ -506,7 +376,7 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
   std::vector<int> landing(static_cast<std::size_t>(w));
   int first = width, last = -1;
   for (int col = 0; col < w; ++col) {
-    const int lands = landing_x(x + col, bytes_per_pixel, layout);
+    const int lands = lfb_landing_x(x + col, bytes_per_pixel, layout);
     landing[static_cast<std::size_t>(col)] = lands;
     if (lands < width) first = std::min(first, lands), last = std::max(last, lands);
   }
@@ -521,9 +391,10 @@ FxBool grLfbWriteRegion(GrBuffer_t dst_buffer, FxU32 dst_x, FxU32 dst_y, GrLfbSr
       if (lands >= width) continue;
       const std::uint8_t *p = in + static_cast<std::size_t>(row) * static_cast<std::size_t>(src_stride) +
                               static_cast<std::size_t>(col) * static_cast<std::size_t>(bytes_per_pixel);
-      block[static_cast<std::size_t>(row * span + lands - first)] =
-          expand(mode, layout.color_format, swizzled(load(p, bytes_per_pixel), bytes_per_pixel, layout),
-                 ctx.lfb.constant_alpha, ctx.lfb.constant_depth);
+      const std::uint32_t data =
+          swizzled_lfb_data(load_lfb_data(p, bytes_per_pixel), bytes_per_pixel, layout);
+      block[static_cast<std::size_t>(row * span + lands - first)] = expand_lfb_data(
+          mode, layout.color_format, data, ctx.lfb.constant_alpha, ctx.lfb.constant_depth);
       written[static_cast<std::size_t>(lands - first)] = true;
     }
   }
