@@ -3,6 +3,8 @@
 // leaves, for the projected techniques and the depth map, the footprint checks off.
 #include "hard_case_footprint.h"
 
+#include "hard_case_bench.h"
+
 #include "hard_case_scenes.h"
 
 #include "measure/speed_error.h"
@@ -39,12 +41,7 @@ static bool footprint_table(const std::vector<gs::BenchConfiguration> &configura
     frames.push_back({name.substr(name.find_last_of('/') + 1), hard_cases::load(name + ".json")});
   }
   std::vector<gs::BenchRow> rows;
-  std::string error;
-  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
-                     error)) {
-    std::fprintf(stderr, "hard_case_sweeps: footprint: %s\n", error.c_str());
-    return false;
-  }
+  if (!measure_once(frames, configurations, "footprint", rows)) return false;
   std::printf("\n### Texel footprint against interior error (the check off)\n\n"
               "footprint in screen pixels per texel: interior error %% (false shadow + false "
               "light)\n\n| technique |");

@@ -18,6 +18,7 @@
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
 //   hard_case_sweeps [classes|footprint|depth-footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
 //   (default: all), or hard_case_sweeps files SCENE.json...
+#include "hard_case_bench.h"
 #include "hard_case_footprint.h"
 #include "hard_case_scenes.h"
 
@@ -66,12 +67,7 @@ bool sweep(const std::string &title, const std::string &parameter,
   std::vector<gs::BenchFrame> frames;
   for (const Column &column : columns) frames.push_back(column.frame);
   std::vector<gs::BenchRow> rows;
-  std::string error;
-  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
-                     error)) {
-    std::fprintf(stderr, "hard_case_sweeps: %s: %s\n", title.c_str(), error.c_str());
-    return false;
-  }
+  if (!hard_cases::measure_once(frames, configurations, title, rows)) return false;
   std::printf("\n### %s\n\nmisclassified %% (false shadow interior %% / false light interior %%)"
               "\n\n| technique | %s |",
               title.c_str(), parameter.c_str());
@@ -324,12 +320,7 @@ bool files(const std::vector<std::string> &paths) {
   configurations.push_back(plain("none"));
   const std::size_t techniques = configurations.size() - 1;
   std::vector<gs::BenchRow> rows;
-  std::string error;
-  if (!gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows,
-                     error)) {
-    std::fprintf(stderr, "hard_case_sweeps: files: %s\n", error.c_str());
-    return false;
-  }
+  if (!hard_cases::measure_once(frames, configurations, "files", rows)) return false;
   std::printf("\n### Scene files, every technique at its defaults\n\ninterior error %% "
               "(misclassified %%); * over 0.1%%\n\n| scene | shadow %% |");
   for (std::size_t k = 0; k < techniques; ++k) std::printf(" %s |", configurations[k].technique.c_str());
