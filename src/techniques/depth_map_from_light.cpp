@@ -201,16 +201,16 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     gl_.glMatrixMode(GL_MODELVIEW);
     gl_.glLoadMatrixf(&frustum.view[0][0]);
     // Full meshes, not shadow_mesh: a simplified caster would shadow the surface it cuts into.
-    std::vector<glm::vec3> slid;  // world; the bound's copy of a caster, reused
+    std::vector<glm::vec3> slid;    // world; the bound's copy of a caster, reused
+    std::vector<glm::vec3> facets;  // world; a self-shadowing caster pushed back between facets
     for (const WorldMesh &mesh : meshes_) {
       const auto object = static_cast<std::size_t>(mesh.object - scene_.objects.data());
       if (!mesh.object->casts_shadow || !drawn[object]) continue;
       // A caster that shadows itself is drawn pushed back where it turns away from the light
       // between facets (depth_map_facets.h).
-      const std::vector<glm::vec3> positions =
-          mesh.object->receives_shadow && options_.depth_map_facet_bias
-              ? facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side)
-              : mesh.position;
+      const bool pushed = mesh.object->receives_shadow && options_.depth_map_facet_bias;
+      if (pushed) facets = facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side);
+      const std::vector<glm::vec3> &positions = pushed ? facets : mesh.position;  // world
       draw_caster(mesh, positions);
       // The slope term bounded: the same caster again with every point slid along its own ray
       // to (1 + bound) times its light-view depth (the light is the view's origin, so it covers
