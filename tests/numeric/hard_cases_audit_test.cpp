@@ -60,16 +60,17 @@ TEST(HardCases, ClosedBoxAroundTheLightMovedDepthMap) {
   expect_these_right_or_refused("k1, the light moved, the box receiving", receiving, {"depth-map"},
                                 {}, true);
   const gs::Scene scene = cage_with_light_moved(kCageOffsets[1]);
+  const Truth truth = truth_of(scene);
   gs::TechniqueOptions unbounded;
   unbounded.depth_bias_bound = INFINITY;
-  const Outcome o = run("depth-map", scene, truth_of(scene), unbounded);
+  const Outcome o = run("depth-map", scene, truth, unbounded);
   report("k1, the light moved, depth-map unbounded", o);
   EXPECT_GT(o.errors.false_light_interior, 0.05);  // a share: 16% measured
   // A bound below 0 would slide the copy nearer the light than the caster: refused with a
   // warning, and the frame drawn unbounded (the same fault).
   gs::TechniqueOptions negative;
   negative.depth_bias_bound = -0.5f;
-  const Outcome refused = run("depth-map", scene, truth_of(scene), negative);
+  const Outcome refused = run("depth-map", scene, truth, negative);
   ASSERT_FALSE(refused.warnings.empty());
   EXPECT_NE(refused.warnings[0].find("slope bound of -0.5"), std::string::npos) << refused.warnings[0];
   EXPECT_GT(refused.errors.false_light_interior, 0.05);
