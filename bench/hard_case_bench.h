@@ -1,5 +1,6 @@
 // hard_case_sweeps' one way of measuring (hard_case_sweeps.cpp, hard_case_footprint.cpp): every
-// configuration on every frame once, without progress, a failure printed with the sweep's name.
+// configuration on every frame once, without progress, a failure printed with the sweep's name;
+// and a technique's configuration at its defaults.
 #pragma once
 
 #include "measure/speed_error.h"
@@ -9,6 +10,13 @@
 #include <vector>
 
 namespace hard_cases {
+
+// A technique at its defaults.
+inline gs::BenchConfiguration plain(const std::string &technique) {
+  gs::BenchConfiguration c;
+  c.technique = technique;
+  return c;
+}
 
 // run_bench's rows (frame-major, configurations in order) in `rows`; false, said on stderr,
 // when a configuration could not render.

@@ -37,11 +37,7 @@ struct Column {
   gs::BenchFrame frame;
 };
 
-gs::BenchConfiguration plain(const std::string &technique) {
-  gs::BenchConfiguration c;
-  c.technique = technique;
-  return c;
-}
+using hard_cases::plain;
 
 gs::BenchConfiguration depth_map(float slope, float units) {
   gs::BenchConfiguration c = plain("depth-map");
