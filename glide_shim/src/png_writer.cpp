@@ -15,7 +15,9 @@ extern "C" __attribute__((visibility("default"))) int glideshim_write_png(
     error[error_size - 1] = '\0';
     return 0;
   };
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+  // PNG whatever the name says: OpenImageIO would choose the format by the extension, and a path
+  // without one (/dev/stdout, /dev/null, a name a script chose) would have no writer.
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create("png");
   if (!out) return fail(std::string("cannot write '") + path + "': " + OIIO::geterror());
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   // Level 6 keeps files small without making a frame dump the slowest part of a frame.

@@ -74,7 +74,7 @@ Command add_render_command(CLI::App &app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App *render = app.add_subcommand("render", "render a scene file (JSON, docs/scene_format.md)");
   render->add_option("scene", o->scene_path, "scene file")->required();
-  render->add_option("--out", o->out, "output PNG")->capture_default_str();
+  render->add_option("--out", o->out, "output PNG (PNG whatever the name: /dev/null discards it)")->capture_default_str();
   render->add_option("--mask", o->mask, "also write the shadow mask PNG (white: darkened by the technique)");
   render->add_flag("--allow-missing-shadows", o->allow_missing_shadows,
                    "exit 0 even when the technique cannot cast a shadow the scene has (it says which)");

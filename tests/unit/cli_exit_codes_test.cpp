@@ -69,6 +69,23 @@ TEST(CommandLineExitCodes, MissingOrBrokenInputExitsOne) {
   EXPECT_EQ(run_tool("render " + out + "/broken.json --out " + out + "/r.png").exit_code, 1);
 }
 
+// The images are PNG whatever their names say: a path with no extension, or another format's, is
+// not a reason to fail (a script's `--out /dev/null` once exited 1: no writer for the name).
+TEST(CommandLineExitCodes, RenderWritesPngWhateverTheName) {
+  const std::string out = scratch("png_names");
+  const std::string scene = kHardCases + "/box_over_floor.json";
+  const ToolRun discarded = run_tool("render " + scene + " --out /dev/null --mask /dev/null");
+  EXPECT_EQ(discarded.exit_code, 0) << discarded.output;
+  for (const std::string &name : {std::string("frame"), std::string("frame.jpg")}) {
+    const ToolRun run = run_tool("render " + scene + " --out " + out + "/" + name);
+    ASSERT_EQ(run.exit_code, 0) << name << ": " << run.output;
+    std::ifstream written(out + "/" + name, std::ios::binary);
+    std::string signature(8, '\0');
+    written.read(signature.data(), 8);
+    EXPECT_EQ(signature, std::string("\x89PNG\r\n\x1a\n", 8)) << name;
+  }
+}
+
 // A frame the technique cannot shadow fully is an error unless the user allows missing shadows.
 TEST(CommandLineExitCodes, RenderMissingAShadowExitsOneUnlessAllowed) {
   const std::string out = scratch("missing_shadow");
