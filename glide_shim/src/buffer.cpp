@@ -34,7 +34,7 @@ bool export_buffer(GrBuffer_t buffer, const std::string &path, std::string &erro
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grBufferClear(GrColor_t color, GrAlpha_t alpha, FxU16 depth) {
   (void)alpha;  // the aux buffer holds depth, so there are no alpha planes to clear

@@ -77,7 +77,7 @@ std::vector<ShimVertex> clip_and_draw_fan(GlideContext &ctx, std::vector<ShimVer
 using glide_shim::current;
 using glide_shim::ShimVertex;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex *c) {
   auto &ctx = current();

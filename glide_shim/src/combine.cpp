@@ -90,7 +90,7 @@ void texture_combine_preset(const char *name, GrChipID_t tmu, GrTextureCombineFn
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grColorCombine(GrCombineFunction_t function, GrCombineFactor_t factor,
                     GrCombineLocal_t local, GrCombineOther_t other, FxBool invert) {

@@ -142,7 +142,7 @@ int bias_compare_intervals(const DepthState &depth, DepthInterval intervals[2]) 
 using glide_shim::current;
 
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grDepthBufferMode(GrDepthBufferMode_t mode) {
   auto &ctx = current();

@@ -280,7 +280,7 @@ void draw_polygon(const char *function, int nverts, const int *ilist, bool index
 
 using glide_shim::current;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grCullMode(GrCullMode_t mode) {
   auto &ctx = current();

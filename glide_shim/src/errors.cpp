@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grErrorSetCallback(GrErrorCallbackFnc_t function) {
   glide_shim::current().errors.callback = function;

@@ -61,7 +61,7 @@ bool check_scale(const char *function, float density, float scale) {
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grFogMode(GrFogMode_t mode) {
   auto &ctx = current();

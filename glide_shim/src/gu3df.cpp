@@ -176,7 +176,7 @@ void report_file(const char *function, const char *filename, const std::string &
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 FxBool gu3dfGetInfo(const char *filename, Gu3dfInfo *info) {
   if (filename == nullptr || info == nullptr) {

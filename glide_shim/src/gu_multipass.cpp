@@ -166,7 +166,7 @@ void draw_multiplied_passes(glide_shim::GlideContext &ctx, const SavedState &sav
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void guMPInit(void) {
   GrMPState &state = current().multipass;

@@ -151,7 +151,7 @@ void GuTextureManager::reset() {
 
 }  // namespace glide_shim
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 GrMipMapId_t guTexAllocateMemory(GrChipID_t tmu, FxU8 odd_even_mask, int width, int height,
                                  GrTextureFormat_t fmt, GrMipMapMode_t mm_mode,

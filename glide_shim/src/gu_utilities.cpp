@@ -73,7 +73,7 @@ bool decode_rle_row(const FxU8 *bitmap, long rows, long row, const FxU16 *tlut,
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 FxU32 guEndianSwapWords(FxU32 value) { return (value >> 16) | (value << 16); }
 

@@ -9,7 +9,7 @@
 
 using glide_shim::current;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 // The driver's bodies are empty: nothing is read or written, and nothing is reported.
 void guFbReadRegion(const int, const int, const int, const int, const void *, const int) {}

@@ -6,7 +6,7 @@
 
 using glide_shim::current;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grSstResetPerfStats(void) {
   auto &ctx = current();

@@ -5,7 +5,7 @@
 
 using glide_shim::current;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 FxBool glideShimBeginGL(void) {
   auto &ctx = current();

@@ -42,7 +42,7 @@ bool is_origin(GrOriginLocation_t origin) {
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grGlideInit(void) {
   auto &ctx = current();

@@ -195,7 +195,7 @@ void restore(glide_shim::GlideContext &ctx, const PackedState &s) {
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grGlideGetState(GrState *state) {
   auto &ctx = current();

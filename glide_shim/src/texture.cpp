@@ -50,7 +50,7 @@ bool check_tmu(const char *function, GrChipID_t tmu) {
 using glide_shim::check_texture_info;
 using glide_shim::check_tmu;
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 FxU32 grTexMinAddress(GrChipID_t tmu) {
   if (!check_tmu("grTexMinAddress", tmu)) return 0;

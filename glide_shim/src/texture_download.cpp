@@ -34,7 +34,7 @@ void write_memory(FxU32 address, const void *data, FxU32 bytes) {
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grTexDownloadMipMap(GrChipID_t tmu, FxU32 startAddress, FxU32 evenOdd, GrTexInfo *info) {
   auto &ctx = current();
@@ -164,7 +164,7 @@ void download_table(const char *name, GrChipID_t tmu, GrTexTable_t type, const v
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 void grTexDownloadMipMapLevelPartial(GrChipID_t tmu, FxU32 startAddress, GrLOD_t thisLod,
                                      GrLOD_t largeLod, GrAspectRatio_t aspectRatio,

@@ -65,7 +65,7 @@ glide_shim::Backend *window_backend() {
 
 }  // namespace
 
-namespace glide_shim_api {  // exported through entry_points.cpp (exception barrier)
+namespace glide_shim_api {  // exported through entry_points_*.cpp (exception barrier)
 
 int glideShimPollKey(void) {
   glide_shim::Backend *backend = window_backend();

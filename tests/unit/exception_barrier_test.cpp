@@ -1,4 +1,4 @@
-// The exception barrier of the C API (glide_shim/src/exception_barrier.h, entry_points.cpp):
+// The exception barrier of the C API (glide_shim/src/exception_barrier.h, entry_points_*.cpp):
 // an exception thrown inside a call never reaches the caller. This binary replaces the global
 // operator new so that a test can make one allocation fail inside a shim call (the shim is a
 // shared library, so its allocations come here too): the call must return its failure value,
