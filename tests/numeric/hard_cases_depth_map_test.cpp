@@ -57,6 +57,10 @@ std::set<int> depth_map_fine_or_refused(const std::string &file, const gs::Scene
 bool depth_map_accepts(const std::string &file, const gs::Scene &scene) {
   std::string error;
   const auto technique = gs::make_technique("depth-map", {}, error);
+  if (!technique) {
+    ADD_FAILURE() << file << ": " << error;
+    return false;
+  }
   grGlideInit();
   EXPECT_TRUE(glideShimSetWindowSize(scene.width, scene.height));
   EXPECT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
