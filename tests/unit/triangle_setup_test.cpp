@@ -4,7 +4,8 @@
 // (colour and alpha sources, delta0, fog source, depth mode and bias, the STW hint), on random
 // vertices, half-way coordinates, the snap offset's window and NaN, infinity or out-of-range
 // values in each float; and the context's cached fields_read stays equal to a fresh one across
-// the state changes an open window goes through.
+// the state changes an open window goes through; queue_checked_triangle, which grDrawTriangle
+// calls, queues exactly the triangles triangle_is_valid passes, converted as write_vertex does.
 #include "draw.h"
 
 #include <glide.h>
@@ -156,6 +157,57 @@ TEST(TriangleSetup, RefusesWhatCheckVertexRefuses) {
   });
   EXPECT_GT(refused, cases / 10);  // both verdicts were exercised
   EXPECT_LT(refused, cases);
+}
+
+// grDrawTriangle's own call, queue_checked_triangle, on an open window's renderer: a triangle
+// that passes triangle_is_valid's checks is queued at the end of the queue with write_vertex's
+// bits, and one that fails them (a NaN, an infinity or an out-of-range value in a float the
+// state reads) returns null and queues nothing.
+TEST(TriangleSetup, QueuesWhatItChecksAsWriteVertexConverts) {
+  grGlideInit();
+  ASSERT_TRUE(grSstWinOpen(0, GR_RESOLUTION_640x480, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                           GR_ORIGIN_UPPER_LEFT, 2, 1));
+  GlideContext &context = glide_shim::current();
+  glide_shim::GlRenderer &renderer = *context.renderer;
+  const auto queue_end = [&renderer] {
+    return renderer.queue_space(glide_shim::Primitive::Triangles, 0);
+  };
+  const float bad_values[] = {std::numeric_limits<float>::quiet_NaN(),
+                              -std::numeric_limits<float>::infinity(), 1.0e30f};
+  std::mt19937 random(29);
+  std::uniform_int_distribution<int> corner(0, 2), index(0, glide_shim::kCheckedVertexFloats - 1),
+      value(0, 2);
+  int queued = 0, refused = 0;
+  for_each_state(context, [&](const glide_shim::VertexFields &fields) {
+    for (int t = 0; t < 4; ++t) {
+      GrVertex in[3] = {random_vertex(random), random_vertex(random), random_vertex(random)};
+      if (t >= 2) (&in[corner(random)].x)[index(random)] = bad_values[value(random)];
+      const ShimVertex *end = queue_end();
+      const ShimVertex *out = glide_shim::queue_checked_triangle(renderer, fields, in[0], in[1], in[2]);
+      if (!glide_shim::triangle_is_valid(fields, in[0], in[1], in[2])) {
+        ASSERT_EQ(out, nullptr);
+        ASSERT_EQ(queue_end(), end) << "a refused triangle was queued";
+        ++refused;
+        continue;
+      }
+      ASSERT_NE(out, nullptr);
+      ASSERT_EQ(queue_end(), out + 3) << "the triangle is not the queue's last three vertices";
+      for (int k = 0; k < 3; ++k) {
+        ShimVertex alone;
+        glide_shim::write_vertex(fields, in[k], alone);
+        const float *q = &out[k].x, *a = &alone.x;
+        for (std::size_t i = 0; i < sizeof(ShimVertex) / sizeof(float); ++i) {
+          ASSERT_EQ(float_bits(q[i]), float_bits(a[i])) << "vertex " << k << ", float " << i;
+        }
+      }
+      renderer.unqueue(3);  // nothing is drawn at the window's close
+      ++queued;
+    }
+  });
+  EXPECT_GT(queued, 1536 * 2);  // every state's two clean triangles, and some of the others
+  EXPECT_GT(refused, 1536 / 4);
+  grSstWinClose();
+  grGlideShutdown();
 }
 
 void expect_same_fields(const glide_shim::VertexFields &fresh,

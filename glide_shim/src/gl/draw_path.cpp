@@ -43,9 +43,34 @@ GLenum gl_blend_factor(GrAlphaBlendFnc_t factor, bool source) {
   }
 }
 
+// Without mip-mapping, the one level sampled: lodmin, or the next if evenOdd left it out.
+int sampled_level(const BoundTexture &bound) {
+  const int level = static_cast<int>(bound.lod_min);
+  return bound.levels[level][3] < 0.5f ? std::min(level + 1, kLodCount - 1) : level;
+}
+
+// What a TMU with no grTexSource yet samples: a texture of size 1 reading texel zero of an
+// unbound unit (0,0,0,0).
+BoundTexture no_texture() {
+  BoundTexture none;
+  none.levels[GR_LOD_256][1] = none.levels[GR_LOD_256][2] = none.levels[GR_LOD_256][3] = 1.0f;
+  return none;
+}
+
 }  // namespace
 
 using namespace gl_internal;
+
+void GlRenderer::compile_level(PipelineKey &key) {
+  const BoundTexture bound = context_.tmu.source.valid ? textures_.bind(backend_->gl, context_.tmu)
+                                                       : no_texture();
+  const int level = sampled_level(bound);
+  key.level_compiled = true;
+  key.level_width = static_cast<int>(bound.levels[level][1]);
+  key.level_height = static_cast<int>(bound.levels[level][2]);
+  key.level_lod = level;
+  key.lod_min = static_cast<int>(bound.lod_min);
+}
 
 void GlRenderer::apply_fixed_function_state() {
   const GlFunctions &gl = backend_->gl;
@@ -157,16 +182,12 @@ void GlRenderer::use_program(const ShaderProgram *program, const PipelineKey &ke
     gl.glUniform4fv(program->tex_levels, kLodCount, &bound.levels[0][0]);
     gl.glUniform2f(program->lod_range, bound.lod_min, bound.lod_max);
     gl.glUniform1f(program->lod_bias, context_.tmu.lod_bias);
-    // Without mip-mapping the one level sampled: lodmin, or the next if evenOdd left it out.
-    int level = static_cast<int>(bound.lod_min);
-    if (bound.levels[level][3] < 0.5f) level = std::min(level + 1, kLodCount - 1);
+    const int level = sampled_level(bound);
     gl.glUniform4fv(program->level, 1, bound.levels[level]);
     gl.glUniform1f(program->level_scale, 1.0f / static_cast<float>(1 << level));
   } else if (key.texture) {
-    // No grTexSource yet: a texture of size 1 reading texel zero of an unbound unit (0,0,0,0).
-    gl.glBindTexture(GL_TEXTURE_2D, 0);
-    BoundTexture none;
-    none.levels[GR_LOD_256][1] = none.levels[GR_LOD_256][2] = none.levels[GR_LOD_256][3] = 1.0f;
+    gl.glBindTexture(GL_TEXTURE_2D, 0);  // no grTexSource yet
+    const BoundTexture none = no_texture();
     gl.glUniform2f(program->tex_size, 1.0f, 1.0f);
     gl.glUniform4fv(program->tex_levels, kLodCount, &none.levels[0][0]);
     gl.glUniform2f(program->lod_range, 0.0f, 0.0f);
@@ -190,6 +211,7 @@ void GlRenderer::flush() {
   const GlFunctions &gl = backend_->gl;
   PipelineKey key = pipeline_key(context_, context_.fast_paths);
   key.line_rows = key.fast && key.dither != GR_DITHER_DISABLE && primitive_ == Primitive::Lines;
+  if (key.sources && key.texture && !key.mipmap) compile_level(key);
   std::string name = key.defines();  // the program cache's key, made once per flush
   if (key.sources && programs_.count(name) == 0 && ++states_seen_[name] < 2) {
     key = key.without_sources();  // compiled in once the state is drawn again

@@ -127,6 +127,9 @@ class GlRenderer {
   const ShaderProgram *program_for(const PipelineKey &key);
   // The same, with the key's defines() (its cache name) already made: flush makes it once.
   const ShaderProgram *program_for(const PipelineKey &key, const std::string &name);
+  // Binds the TMU's texture and compiles the level it samples into a fast key (see
+  // PipelineKey::level_compiled).
+  void compile_level(PipelineKey &key);
   void apply_fixed_function_state();
   void set_fog_uniforms(const ShaderProgram &program);
   void use_program(const ShaderProgram *program, const PipelineKey &key);

@@ -121,6 +121,8 @@ PipelineKey PipelineKey::without_sources() const {
   key.sources = false;
   key.color_local = key.color_other = key.alpha_local = key.alpha_other = 0;
   key.color_invert = key.alpha_invert = key.tmu_rgb_invert = key.tmu_alpha_invert = false;
+  key.level_compiled = false;
+  key.level_width = key.level_height = key.level_lod = key.lod_min = 0;
   return key;
 }
 
@@ -138,6 +140,10 @@ std::string PipelineKey::defines() const {
   if (sources) {
     s << " sources " << color_local << color_other << color_invert
       << alpha_local << alpha_other << alpha_invert << tmu_rgb_invert << tmu_alpha_invert;
+  }
+  if (level_compiled) {
+    s << " level " << level_width << 'x' << level_height << " lod " << level_lod << " lodmin "
+      << lod_min;
   }
   return s.str();
 }

@@ -55,16 +55,9 @@ bool rgb_is_iterated(const PipelineKey &key) {
 
 using namespace shader_stages;
 
-// The fast programs' vertex shader (GLSL 1.30) also hands the TMU's one level on as a flat
-// varying: a uniform read in llvmpipe's fragment code is a bounds-checked gather per pixel
-// (about 20 instructions a component for 8 pixels), in its vertex code one load.
+// The vertex shader, in the fragment shader's GLSL version (1.30 for the fast programs).
 std::string vertex_shader_source(bool fast) {
-  std::string s = fast ? R"(#version 130
-uniform vec4 u_level;        // as in the fragment shader's prelude
-uniform float u_level_scale;
-uniform vec2 u_lod_range;
-flat out vec4 v_level_flat;  // u_level.yz (width, height), u_level_scale, u_lod_range.x
-)" : "#version 120\n";
+  std::string s = fast ? "#version 130\n" : "#version 120\n";
   s += R"(attribute vec2 a_position;  // screen pixels in the Glide origin
 attribute float a_depth;    // GL window depth, 0..1
 attribute vec4 a_color;     // 0..255
@@ -85,9 +78,9 @@ void main() {
   v_color = a_color;
   v_stq = a_stq;
   v_fog = a_fog;
+}
 )";
-  if (fast) s += "  v_level_flat = vec4(u_level.yz, u_level_scale, u_lod_range.x);\n";
-  return s + "}\n";
+  return s;
 }
 
 std::string fragment_shader_source(const PipelineKey &key) {

@@ -36,7 +36,8 @@ struct PipelineKey {
   // Filters: with one reachable LOD (no mip-mapping) only the magnification filter is used.
   bool mag_bilinear = false, min_bilinear = false;
   // LOD computed per pixel (grTexMipMapMode on, more than one level); without it the LOD, the
-  // level sampled and its scale are uniforms, and the shader does no LOD work per pixel.
+  // level sampled and its scale are uniforms (or compiled in: level_compiled), and the shader
+  // does no LOD work per pixel.
   bool mipmap = false;
   bool lod_dither = false;  // GR_MIPMAP_NEAREST_DITHER with the hint that allows it
   bool wrap_s = false, wrap_t = false;
@@ -65,6 +66,13 @@ struct PipelineKey {
   // so v_row there is the line's own y, not the pixel's row (set by the renderer, which knows
   // the primitive).
   bool line_rows = false;
+  // Fast with sources and one reachable LOD (no mip-mapping): the level sampled compiled in
+  // as constants, its width and height in texels, its GR_LOD value (the scale from Glide's
+  // 0..256 s,t to its texels is 2^-level_lod) and lodmin, instead of uniforms (a gather per
+  // pixel in llvmpipe's fragment code) or a flat varying (a fifth input slot that llvmpipe sets
+  // up, stores and reads back for every triangle). Set by the renderer, which binds the texture.
+  bool level_compiled = false;
+  int level_width = 0, level_height = 0, level_lod = 0, lod_min = 0;
   // Compiled-in sources, as unit_uniforms selects them (fast only; zero otherwise):
   // local 1 = constant, other 0/1/2 = iterated/texture/constant.
   int color_local = 0, color_other = 0, alpha_local = 0, alpha_other = 0;
@@ -82,7 +90,7 @@ struct PipelineKey {
 PipelineKey pipeline_key(const GlideContext &context, bool fast);
 bool reads_texture(const ColorPathState &path);
 
-std::string vertex_shader_source(bool fast);  // fast: for PipelineKey::fast programs
+std::string vertex_shader_source(bool fast);  // fast: GLSL 1.30, for PipelineKey::fast programs
 std::string fragment_shader_source(const PipelineKey &key);
 
 // The run-time half of a combine unit, as 0/1 selectors (exact in float arithmetic):

@@ -3,6 +3,7 @@
 // LOD_FRACTION and DETAIL factors the texture combine reads.
 #include "gl/shader_stages.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace glide_shim {
@@ -74,7 +75,6 @@ std::string tmu_sample_code(const PipelineKey &key) {
   const char *address_s = key.wrap_s ? "wrap_index" : "clamp_index";
   const char *address_t = key.wrap_t ? "wrap_index" : "clamp_index";
   std::ostringstream s;
-  if (key.fast && !key.mipmap) s << "flat in vec4 v_level_flat;\n";
   s << "vec4 sample_tmu(out float lod) {\n"
        "  // Glide s,t span 0..256 along the longer side; a divisor <= 0 gives s = t = 0.\n"
        "  vec2 st = v_stq.z > 0.0 ? v_stq.xy / v_stq.z : vec2(0.0);\n";
@@ -89,11 +89,14 @@ std::string tmu_sample_code(const PipelineKey &key) {
          "  if (u_tex_levels[int(ilod)].w < 0.5) ilod = min(ilod + 1.0, 8.0);\n"
          "  vec4 level = u_tex_levels[int(ilod)];\n"
          "  vec2 uv = st / exp2(ilod);  // texel units of the level\n";
-  } else if (key.fast) {
-    // The same values through the vertex shader's flat v_level_flat (vertex_shader_source).
-    s << "  lod = v_level_flat.w;\n"
-         "  vec4 level = vec4(0.0, v_level_flat.xy, 1.0);  // row 0 as below; w unused\n"
-         "  vec2 uv = st * v_level_flat.z;  // texel units of the level\n";
+  } else if (key.level_compiled) {
+    // The same values as the uniforms below, compiled in: whole numbers, and a power of two
+    // written exactly (at most 9 significant digits).
+    s << "  lod = " << key.lod_min << ".0;\n"
+      << "  vec4 level = vec4(0.0, " << key.level_width << ".0, " << key.level_height
+      << ".0, 1.0);  // row 0 as below\n"
+      << "  vec2 uv = st * " << std::setprecision(9) << std::fixed
+      << 1.0 / static_cast<double>(1 << key.level_lod) << ";  // texel units of the level\n";
   } else {
     s << "  lod = u_lod_range.x;\n"
          // The one level sampled is the first the atlas holds (lodmin, or the next one when
