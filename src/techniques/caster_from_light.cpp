@@ -351,12 +351,11 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
     return;
   }
   const FxU32 side = static_cast<FxU32>(view.size);
-  // The clear, colour to 0 (and depth to the farthest W for a SurfaceMask), of the whole target:
-  // on the LFB path the whole back buffer, which step 4 clears again before anything reads it.
-  // llvmpipe fills a clear of the whole buffer tile by tile, where one clipped to the region is
-  // a quad drawn through a fragment program; the region's words are the same either way.
-  grClipWindow(0, 0, view.direct_path ? side : static_cast<FxU32>(scene.width),
-               view.direct_path ? side : static_cast<FxU32>(scene.height));
+  // The clear, colour to 0 (and depth to the farthest W for a SurfaceMask), of the size x size
+  // region only (Glide screen, the target's top left), as a Voodoo clears the clip window: the
+  // shim copies a clipped clear's words from a side buffer (clipped_clear.cpp), where a clear of
+  // the whole 640x480 back buffer filled every tile of it before the read-back.
+  grClipWindow(0, 0, side, side);
   grDepthBufferMode(mask ? GR_DEPTHBUFFER_WBUFFER : GR_DEPTHBUFFER_DISABLE);
   grDepthMask(mask ? FXTRUE : FXFALSE);
   grDitherMode(GR_DITHER_DISABLE);  // a dithered 240 would not always be 11110b
@@ -364,7 +363,6 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
   grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
-  grClipWindow(0, 0, side, side);
   if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
   grDepthMask(FXFALSE);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,

@@ -205,6 +205,44 @@ TEST(DitheredPrimitives, FastPathsGiveTheExactBytes) {
   expect_same(fast, exact, "dithered lines, points and slivers");
 }
 
+// grBufferClear inside a clip window smaller than the screen (the fast paths copy it from a side
+// buffer, clipped_clear.cpp; GL clears it through the scissor), in both origins: colour and depth,
+// colour alone, depth alone in a window wider than any before (the side buffer grows), an empty
+// window, and values that change between clears.
+TEST(ClippedClears, FastPathsGiveTheExactBytes) {
+  for (GrOriginLocation_t origin : {GR_ORIGIN_UPPER_LEFT, GR_ORIGIN_LOWER_LEFT}) {
+    auto draw = [origin] {
+      grSstOrigin(origin);
+      grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+      grDepthMask(FXTRUE);
+      grBufferClear(0x00406080, 0, 0x1234);  // the whole screen
+      grClipWindow(10, 20, 266, 276);
+      grBufferClear(0x00F00000, 0, GR_WDEPTHVALUE_FARTHEST);
+      grClipWindow(300, 5, 330, 400);
+      grDepthMask(FXFALSE);
+      grBufferClear(0x0000FF00, 0, 0x4000);  // colour only: depth writes are off
+      grColorMask(FXFALSE, FXFALSE);
+      grDepthMask(FXTRUE);
+      grClipWindow(100, 100, 600, 130);
+      grBufferClear(0x000000FF, 0, 0x2000);  // depth only: colour writes are off
+      grColorMask(FXTRUE, FXFALSE);
+      grClipWindow(50, 50, 50, 90);
+      grBufferClear(0x00FFFFFF, 0, 0);  // an empty window clears nothing
+      grClipWindow(0, 0, 640, 480);
+    };
+    const std::string what = origin == GR_ORIGIN_UPPER_LEFT ? "upper-left origin" : "lower-left origin";
+    const Buffers fast = render(false, GR_BUFFER_BACKBUFFER, draw);
+    const Buffers exact = render(true, GR_BUFFER_BACKBUFFER, draw);
+    // Red 240 (565 0xF000) fills the first window, green the second, which it does not overlap.
+    std::size_t red = 0, green = 0, white = 0;
+    for (FxU16 word : fast.color) red += word == 0xF000, green += word == 0x07E0, white += word == 0xFFFF;
+    EXPECT_EQ(red, 256u * 256u) << what;
+    EXPECT_EQ(green, 30u * 395u) << what;
+    EXPECT_EQ(white, 0u) << what;
+    expect_same(fast, exact, what);
+  }
+}
+
 // demo_bench's three frames: no shadows, projected shadows through the LFB, and through texture
 // memory directly; three moments of the fight, each after two frames before it.
 class FightFrames : public ::testing::TestWithParam<int> {};

@@ -24,6 +24,11 @@ GlRenderer::~GlRenderer() {
   for (auto &entry : programs_) gl.glDeleteProgram(entry.second.program);
   if (bias_mark_program_ != 0) gl.glDeleteProgram(bias_mark_program_);
   if (query_ != 0) gl.glDeleteQueries(1, &query_);
+  if (clear_source_.framebuffer != 0) {
+    gl.glDeleteFramebuffers(1, &clear_source_.framebuffer);
+    gl.glDeleteRenderbuffers(1, &clear_source_.color);
+    gl.glDeleteRenderbuffers(1, &clear_source_.depth);
+  }
   gl.glDeleteFramebuffers(1, &framebuffer_);
   gl.glDeleteRenderbuffers(2, color_buffers_);
   gl.glDeleteRenderbuffers(1, &depth_buffer_);
@@ -163,7 +168,7 @@ void GlRenderer::clear(std::uint16_t rgb565, bool color, double gl_depth, bool d
       mask |= GL_STENCIL_BUFFER_BIT;
     }
   }
-  if (mask != 0) gl.glClear(mask);
+  if (mask != 0 && !clear_by_copy(rgb565, gl_depth, mask)) gl.glClear(mask);
 }
 
 void GlRenderer::read_color(int index, int x, int y, int w, int h, std::uint16_t *dst,

@@ -140,6 +140,9 @@ class GlRenderer {
   // one primitive at a time when `depth_writes`. Returns the pixels drawn when `query` is set.
   std::uint32_t draw_tested(unsigned mode, int first, int count, bool query, bool depth_writes);
   unsigned bias_mark_program();  // writes a constant depth and no colour; 0 on failure
+  // clear()'s work for a clip window smaller than the target (clipped_clear.cpp): copies the
+  // region from clear_source_ when the fast paths and glCopyImageSubData allow; false if not done.
+  bool clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask);
   void draw_counting_stages(const ShaderProgram *program, const PipelineKey &key, unsigned mode);
 
   struct Target {
@@ -173,6 +176,18 @@ class GlRenderer {
   unsigned query_ = 0;
   std::uint32_t pixels_counted_ = 0;
   bool disjoint_ = false;  // flush_disjoint is drawing
+  // clear_by_copy's side buffers (GL rows from the bottom, like any renderbuffer), holding the
+  // values of the last clear it filled them for.
+  struct ClearSource {
+    unsigned framebuffer = 0, color = 0, depth = 0;
+    int width = 0, height = 0;
+    bool filled = false;
+    std::uint16_t rgb565 = 0;
+    double gl_depth = 0.0;
+  };
+  ClearSource clear_source_;
+  decltype(&::glCopyImageSubData) copy_image_ = nullptr;  // loaded on the first clipped clear
+  bool copy_image_checked_ = false;
   // No plain GL code (glideShimBeginGL) has drawn into the frame buffer yet, so its stencil
   // holds nothing but zeros (see clear()).
   bool stencil_untouched_ = true;
