@@ -87,14 +87,15 @@ void set_shadow_pass_state(const ShadowTexture &texture, const ProjectedShadowOp
 // the depth test there (GR_CMP_LESS).
 //   - Exact triangles (step 4's own screen vertices) darken and mark in one pass at kExactCodes:
 //     another exact triangle at the same pixel gives the same depth, which is not less.
-//   - Clipped polygons are coplanar with what step 4 drew but not made of the same vertices, so
-//     their depth strays from it by up to 4 codes (tests/hard_cases/eye_near_plane.json): they
+//   - Clipped polygons are cut along step 4's triangles and take their depth planes
+//     (receiver_depth_planes.h), so they too lie on step 4's depth up to float rounding: they
 //     darken at kClippedCodes, then mark kSealCodes nearer with colour writes off (a seal that
-//     every later cover on the same surface fails by more than the stray).
-// Clipped polygons are drawn first, so an exact triangle after them fails on their seals.
+//     every later cover on the same surface, at kExactCodes or kClippedCodes, fails).
+// Clipped polygons are drawn first, so an exact triangle after them fails on their seals. Each
+// code more would let the shadow onto a nearer surface within that depth of the receiver.
 constexpr FxI16 kExactCodes = 1;
-constexpr FxI16 kClippedCodes = 9;
-constexpr FxI16 kSealCodes = kClippedCodes + 16;
+constexpr FxI16 kClippedCodes = 1;
+constexpr FxI16 kSealCodes = kClippedCodes + 2;
 
 void draw_exact(const ReceiverCoords &receivers) {
   for (const ShadowTriangle &t : receivers.triangles) {
@@ -433,8 +434,9 @@ void render_shadow_mask(const Scene &scene, const ProjectedShadowOptions &option
   grColorMask(FXFALSE, FXFALSE);
   render_scene(scene, frame.geometry);  // step 4's depth, without step 5's marks
   grColorMask(FXTRUE, FXFALSE);
-  // LEQUAL at step 4's depth, as step 5 would find the surfaces without marks.
-  draw_mask(options, frame, 0, 8);
+  // LEQUAL at step 4's depth, as step 5 would find the surfaces without marks; the clipped
+  // polygons a code nearer, for the rounding of their depth planes (kClippedCodes).
+  draw_mask(options, frame, 0, 1);
 }
 
 }  // namespace gs

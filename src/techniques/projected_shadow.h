@@ -235,7 +235,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
 // filtered texture alpha at least half), black elsewhere, drawn into the back buffer over the
 // frame's depth buffer (call before the next clear). Step 5 leaves marks in the depth buffer
 // (one darkening per light), so this version draws the receivers a little nearer than step 4
-// did (kSealCodes and a margin: about 0.6% of the distance), enough to pass them.
+// did (kSealCodes and a margin: about 0.2% of the distance), enough to pass them.
 void render_shadow_mask(const ProjectedShadowOptions &options, const ShadowFrame &frame);
 // The same for a frame of render_projected_shadows(scene, ...): step 4's depth is drawn again
 // first (its frame.geometry), so the receivers are drawn at step 5's own depths.

@@ -6,6 +6,7 @@
 #include "techniques/projected_shadow.h"
 
 #include "techniques/light_beam.h"
+#include "techniques/receiver_depth_planes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -269,7 +270,11 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   // The silhouette segments' boxes in the texture (light screen, texels; the whole plane for a
   // segment reaching behind the light), to pick those that can land on a polygon.
   std::vector<glm::vec4> segment_boxes;
-  for (const SilhouetteSegment &segment : view.silhouette_segments) {
+  std::vector<SilhouetteSegment> segments = view.silhouette_segments;
+  std::vector<glm::vec4> cut_planes;  // world: a light view plane p is transpose(view) p there
+  for (const glm::vec4 &plane : view.edge_planes) cut_planes.push_back(glm::transpose(view.view) * plane);
+  complete_cuts(scene.objects[caster], light.position, cut_planes, segments);
+  for (const SilhouetteSegment &segment : segments) {
     glm::vec2 low(-INFINITY), high(INFINITY);
     const glm::vec4 ends[2] = {light_clip * glm::vec4(segment.a, 1.0f),
                                light_clip * glm::vec4(segment.b, 1.0f)};
@@ -278,6 +283,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   }
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
   std::vector<std::size_t> candidates;
+  std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   EdgeErrorEstimate receiver_edge_error;  // of the receiver in hand
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
   // corners, and their light clip coordinates), and the error along the shadow's edges there.
@@ -308,7 +314,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     }
     segment_grid.overlapping(low, high, candidates);
     add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
-                          view.silhouette_segments, candidates,
+                          segments, candidates,
                           options.bilinear && !options.chroma_key, receiver_edge_error);
   };
 
@@ -370,6 +376,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         if (polygon.size() < 3) break;
       }
       if (polygon.size() < 3) continue;
+      step4_triangles(frame, scene, receiver, t, drawn);
       // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
       const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
       for (std::size_t piece = 0; piece < pieces; ++piece) {
@@ -392,7 +399,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         for (std::size_t i = 0; i < screen.size(); ++i) {
           set_texture_fields(screen[i], view, light_clip, light, part[i].world, options);
         }
-        if (screen.size() >= 3) coords.clipped.push_back(std::move(screen));
+        // Its depth from step 4's triangles under it, not from its own vertices.
+        if (screen.size() >= 3) cut_along_drawn(screen, drawn, !options.projective, coords.clipped);
       }
     }
     coords.edge_error.add(receiver_edge_error);

@@ -124,11 +124,13 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     const SilhouetteSegment &segment = segments[index];
     const float height_a = glm::dot(normal, segment.a - origin);
     const float height_b = glm::dot(normal, segment.b - origin);
-    // Only what lies between the plane and the light throws a shadow on it; a point as high
-    // as the light would throw it to infinity.
+    // Only what lies between the plane and the light throws a shadow on it (a contact edge
+    // rounded a hair below the plane too: a cut by the receiver's plane lies in it); a point as
+    // high as the light would throw it to infinity.
     const float highest = light_height * 0.999f;
+    const float touching = kContactShare * light_height;
     float from = 0.0f, to = 1.0f;
-    keep_non_negative(height_a, height_b, from, to);
+    keep_non_negative(height_a + touching, height_b + touching, from, to);
     keep_non_negative(highest - height_a, highest - height_b, from, to);
     if (!(from < to)) continue;
     const glm::vec3 caster_ends[2] = {glm::mix(segment.a, segment.b, from),
@@ -213,6 +215,60 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                                     : std::max(std::abs(offset) * per_texel - excused_pixels, 0.0f);
         estimate.pixels[size] += sample_length * stray;
       }
+    }
+  }
+}
+
+void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
+                   const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments) {
+  if (cut_planes.empty()) return;
+  const Mesh &mesh = caster_mesh(caster);
+  std::vector<glm::vec3> world(mesh.positions.size());  // the caster's vertices, world space
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    world[i] = glm::vec3(caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    low = glm::min(low, world[i]), high = glm::max(high, world[i]);
+  }
+  // Metres: a cut's ends lie on their triangle within float rounding of the caster's size.
+  const float tolerance = 1e-4f * glm::length(high - low);
+  struct Face {
+    glm::vec3 corner[3];
+    glm::vec3 normal;  // unit, by the winding: towards the light
+    glm::vec4 plane;   // the cut plane it crosses
+  };
+  std::vector<Face> faces;
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    if (!(glm::dot(n, light_position - a) > 0.0f) || !(glm::length(n) > 0.0f)) continue;
+    for (const glm::vec4 &plane : cut_planes) {
+      const float da = glm::dot(plane, glm::vec4(a, 1.0f)), db = glm::dot(plane, glm::vec4(b, 1.0f)),
+                  dc = glm::dot(plane, glm::vec4(c, 1.0f));
+      if (std::max({da, db, dc}) > 0.0f && std::min({da, db, dc}) < 0.0f) {
+        faces.push_back({{a, b, c}, glm::normalize(n), plane});
+      }
+    }
+  }
+  auto on_face = [&](const Face &face, const glm::vec3 &p) {
+    if (std::abs(glm::dot(face.normal, p - face.corner[0])) > tolerance) return false;
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 &u = face.corner[k], &v = face.corner[(k + 1) % 3];
+      if (glm::dot(glm::cross(v - u, p - u), face.normal) < -tolerance * glm::length(v - u)) return false;
+    }
+    return true;
+  };
+  for (SilhouetteSegment &segment : segments) {
+    if (glm::dot(segment.lit_face, segment.lit_face) > 0.0f) continue;
+    for (const Face &face : faces) {
+      if (!on_face(face, segment.a) || !on_face(face, segment.b)) continue;
+      glm::vec3 sum = segment.a + segment.b;
+      float count = 2.0f;
+      for (const glm::vec3 &corner : face.corner) {
+        if (glm::dot(face.plane, glm::vec4(corner, 1.0f)) > 0.0f) sum += corner, count += 1.0f;
+      }
+      segment.lit_face = face.normal;
+      segment.face_point = sum / count;
+      break;
     }
   }
 }

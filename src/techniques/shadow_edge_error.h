@@ -66,6 +66,16 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                            const std::vector<std::size_t> &candidates, bool bilinear,
                            EdgeErrorEstimate &estimate);
 
+// Gives the cuts among `segments` (a zero lit_face: the caster cut by a pierced receiver's
+// plane, one of `cut_planes`, world, positive on the light's side) the caster's triangle they
+// lie on when it faces the light by its winding: its normal as lit_face, and a point of its part
+// on the light's side as face_point. The light then sees that face standing on the receiver and
+// the receiver before its foot is lit, as is the face: on screen no shadow edge runs between
+// them to excuse the pixels next to the cut, so the cut is a contact edge (a box sunk in the
+// floor under a light 0.2 m up, issue 14). Cuts on faces turned away stay as they are.
+void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
+                   const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments);
+
 // The refusal of a shadow whose edges would stray too far (the projected techniques'), naming
 // the light, the caster, the receiver with the most of the error, the estimate (`frame`: the
 // frame's with this shadow's, `taken` of it by the shadows before) against the most accepted
