@@ -13,19 +13,6 @@
 namespace gs {
 namespace {
 
-// A projection's NDC x, y at world point p differentiated along the plane's tangents t1, t2
-// (world, unit), scaled by half the extent [-1, 1] spans (texels or pixels): per metre.
-glm::mat2 tangent_jacobian(const glm::mat4 &clip_from_world, const glm::vec3 &p,
-                           const glm::vec2 &extent, const glm::vec3 &t1, const glm::vec3 &t2) {
-  const glm::vec4 c = clip_from_world * glm::vec4(p, 1.0f);
-  auto row = [&](int r) {  // GLM is column-major: m[column][row]
-    return glm::vec3(clip_from_world[0][r], clip_from_world[1][r], clip_from_world[2][r]);
-  };
-  const glm::vec3 dx = (row(0) - (c.x / c.w) * row(3)) / c.w * (0.5f * extent.x);
-  const glm::vec3 dy = (row(1) - (c.y / c.w) * row(3)) / c.w * (0.5f * extent.y);
-  return glm::mat2(glm::dot(dx, t1), glm::dot(dy, t1), glm::dot(dx, t2), glm::dot(dy, t2));
-}
-
 // Screen pixels an edge through world point p, running along the tangent-plane direction u
 // (unit, in t1, t2 coordinates), moves across itself when the texture moves it one texel
 // across itself: with T texels and P pixels per metre, |det P| |T u| / (|det T| |P u|), which
@@ -53,11 +40,6 @@ void keep_non_negative(float at_from_end, float at_to_end, float &from, float &t
   } else if (at_to_end < 0.0f) {
     to = std::min(to, at_from_end / (at_from_end - at_to_end));
   }
-}
-
-glm::vec2 screen_pixels(const FootprintSpace &space, const glm::vec3 &world) {
-  const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
-  return glm::vec2(c.x, c.y) / c.w * 0.5f * space.pixels;
 }
 
 // Light screen texels (x right, y down, texel centres at i + 0.5) of a world point before the
@@ -113,9 +95,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     area += glm::cross(polygon[i].world - origin, polygon[(i + 1) % polygon.size()].world - origin);
   }
   const float winding = glm::dot(area, normal) < 0.0f ? -1.0f : 1.0f;
-  const glm::vec3 helper = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t1 = glm::normalize(glm::cross(normal, helper));
-  const glm::vec3 t2 = glm::cross(normal, t1);
+  glm::vec3 t1, t2;
+  plane_tangents(normal, t1, t2);
   // A caster edge within this share of the light's height of the plane touches it.
   constexpr float kContactShare = 1e-3f;
   // The texture's edge strays less than this many texels from a straight edge.
@@ -164,7 +145,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
       continue;  // the caster hides the floor beyond its lit face's foot
     }
-    const glm::vec2 screen_along = screen_pixels(space, end) - screen_pixels(space, start);
+    const glm::vec2 screen_along =
+        footprint_screen_pixels(space, end) - footprint_screen_pixels(space, start);
     const float length = glm::length(screen_along);
     // How far from a visible true edge a wrong pixel is not interior error (src/measure/
     // metrics.cpp): a pixel with a 4-neighbour across the edge is its boundary, up to
@@ -248,12 +230,7 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
         }
         polygon.swap(clipped);
       }
-      float twice_area = 0.0f;  // shoelace
-      for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
-        twice_area += p.x * q.y - p.y * q.x;
-      }
-      pixels += 0.5f * std::abs(twice_area);
+      pixels += polygon_area(polygon);
     }
   }
   return std::min(pixels, width * height);
