@@ -52,18 +52,24 @@ glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
 // Where the texture's edge lies near `on_edge` (texels), as a signed distance (texels) along
 // `away` (unit, pointing away from the covered side) from the straight edge through it: step 1
 // covers the texel centres on the edge's covered side, and the mask is shadow where the
-// filtered alpha (bilinear, or the nearest texel's) is at least half. Bisection along `away`:
-// two texels back every centre that weighs is covered, two texels on none is.
-float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, bool bilinear) {
+// filtered alpha (`lookup`) is at least half. Bisection along `away`: two texels back every
+// centre that weighs is covered, two texels on none is.
+float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeLookup lookup) {
   auto covered = [&](float x, float y) {
     return glm::dot(glm::vec2(x, y) - on_edge, away) < 0.0f ? 1.0f : 0.0f;
   };
   auto alpha = [&](const glm::vec2 &p) {
-    if (!bilinear) return covered(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
-    // Voodoo 1 bilinear: a 4-bit fraction between texel centres (the shim's default).
+    if (lookup == EdgeLookup::kNearest) {
+      return covered(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
+    }
+    // Bilinear between texel centres: the Voodoo 1's 4-bit fraction (the shim's default), or
+    // GL's percentage-closer lookup, taken as exact.
     const float x0 = std::floor(p.x - 0.5f), y0 = std::floor(p.y - 0.5f);
-    const float wx = std::floor((p.x - 0.5f - x0) * 16.0f) / 16.0f;
-    const float wy = std::floor((p.y - 0.5f - y0) * 16.0f) / 16.0f;
+    auto fraction = [&](float f) {
+      return lookup == EdgeLookup::kVoodooBilinear ? std::floor(f * 16.0f) / 16.0f : f;
+    };
+    const float wx = fraction(p.x - 0.5f - x0);
+    const float wy = fraction(p.y - 0.5f - y0);
     return (1.0f - wy) * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 0.5f) + wx * covered(x0 + 1.5f, y0 + 0.5f)) +
            wy * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 1.5f) + wx * covered(x0 + 1.5f, y0 + 1.5f));
   };
@@ -81,7 +87,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
                            const std::vector<SilhouetteSegment> &segments,
-                           const std::vector<std::size_t> &candidates, bool bilinear,
+                           const std::vector<std::size_t> &candidates, EdgeLookup lookup,
                            EdgeErrorEstimate &estimate) {
   if (polygon.size() < 3 || candidates.empty()) return;
   const glm::vec3 origin = polygon[0].world;
@@ -188,7 +194,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
         if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
-        const float offset = texture_edge_offset(on_edge * scale, away, bilinear);  // texels
+        const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
         // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
         // caster.
         const float stray = contact ? std::max(offset, 0.0f) * per_texel
