@@ -18,9 +18,6 @@ namespace {
 
 // The grid the silhouette is marked on: kSilhouetteCells a side over the whole map.
 constexpr int kSilhouetteCells = 128;
-// A lookup's reach around the sample: the percentage-closer lookup reads the 2x2 texels whose
-// centres lie within one texel; half a texel more for rounding (as the projected technique).
-constexpr float kLookupReachTexels = 1.5f;
 
 // A frustum's four sides and its near plane in clip space (GL: kept where dot(plane, clip) >= 0).
 const glm::vec4 kFrustumPlanes[5] = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1},
@@ -64,11 +61,8 @@ void trace_in_map(const glm::vec4 &a, const glm::vec4 &b, float side, std::vecto
 std::vector<bool> silhouette_cells(const WorldMesh &mesh, const glm::mat4 &light_clip,
                                    const glm::vec3 &light, float side) {
   std::vector<bool> cells(static_cast<std::size_t>(kSilhouetteCells * kSilhouetteCells), false);
-  const EdgeMesh edges = build_edge_mesh(mesh.object->mesh);
-  std::vector<glm::vec3> world;
-  for (const glm::vec3 &p : edges.positions) {
-    world.push_back(glm::vec3(mesh.object->model_to_world * glm::vec4(p, 1.0f)));
-  }
+  const EdgeMesh &edges = mesh.surface;
+  const std::vector<glm::vec3> &world = mesh.surface_world;
   std::vector<bool> facing = light_facing(edges, world, light);
   for (int turn = 0; turn < 2; ++turn) {
     for (const SilhouetteEdge &e : find_silhouette(edges, facing)) {
@@ -85,10 +79,10 @@ std::vector<bool> silhouette_cells(const WorldMesh &mesh, const glm::mat4 &light
 bool silhouette_rectangle(const std::vector<bool> &cells, const glm::vec2 &low,
                           const glm::vec2 &high, float side, const glm::mat4 &light_clip,
                           std::vector<glm::vec4> &planes) {
-  const int bx0 = silhouette_cell_of(low.x - kLookupReachTexels, side);
-  const int bx1 = silhouette_cell_of(high.x + kLookupReachTexels, side);
-  const int by0 = silhouette_cell_of(low.y - kLookupReachTexels, side);
-  const int by1 = silhouette_cell_of(high.y + kLookupReachTexels, side);
+  const int bx0 = silhouette_cell_of(low.x - kFilterReachTexels, side);
+  const int bx1 = silhouette_cell_of(high.x + kFilterReachTexels, side);
+  const int by0 = silhouette_cell_of(low.y - kFilterReachTexels, side);
+  const int by1 = silhouette_cell_of(high.y + kFilterReachTexels, side);
   int x0 = kSilhouetteCells, y0 = kSilhouetteCells, x1 = -1, y1 = -1;
   for (int y = by0; y <= by1; ++y) {
     for (int x = bx0; x <= bx1; ++x) {
