@@ -58,8 +58,11 @@ void trace_in_map(const glm::vec4 &a, const glm::vec4 &b, float side, std::vecto
 // The cells a caster's silhouette from the light crosses: edges between a triangle facing the
 // light and one facing away (stencil volumes' find_silhouette), and an open mesh's rim, which
 // is found by the same walk with every facing turned round (a rim edge shows in one of the two).
+// The same edges go to `segments` (world), each once, with the face along it that the light
+// sees (a rim's one face, turned towards the light), for the error along the shadow's edges.
 std::vector<bool> silhouette_cells(const WorldMesh &mesh, const glm::mat4 &light_clip,
-                                   const glm::vec3 &light, float side) {
+                                   const glm::vec3 &light, float side,
+                                   std::vector<SilhouetteSegment> &segments) {
   std::vector<bool> cells(static_cast<std::size_t>(kSilhouetteCells * kSilhouetteCells), false);
   const EdgeMesh &edges = mesh.surface;
   const std::vector<glm::vec3> &world = mesh.surface_world;
@@ -70,6 +73,34 @@ std::vector<bool> silhouette_cells(const WorldMesh &mesh, const glm::mat4 &light
                    light_clip * glm::vec4(world[e.to], 1.0f), side, cells);
     }
     facing.flip();
+  }
+  // (Turned round twice: as light_facing gave it.) Per undirected edge (adjacent in
+  // edges.edges), find_silhouette's count of unmatched walks, of the faces towards the light
+  // and of those away.
+  auto undirected = [](const glm::uvec3 &e) { return std::minmax(e.x, e.y); };
+  for (std::size_t first = 0, end = 0; first < edges.edges.size(); first = end) {
+    end = first + 1;
+    while (end < edges.edges.size() && undirected(edges.edges[end]) == undirected(edges.edges[first])) {
+      ++end;
+    }
+    int towards = 0, away = 0;
+    std::size_t lit = end;  // the first walk whose face the light sees
+    for (std::size_t k = first; k < end; ++k) {
+      const int way = edges.edges[k].x < edges.edges[k].y ? 1 : -1;
+      if (facing[edges.edges[k].z]) {
+        towards += way;
+        if (lit == end) lit = k;
+      } else {
+        away += way;
+      }
+    }
+    if (towards == 0 && away == 0) continue;
+    if (lit == end) lit = first;  // a rim the light sees from behind
+    const glm::uvec3 &t = edges.triangles[edges.edges[lit].z];
+    const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
+    const glm::vec3 face = glm::cross(b - a, c - a);
+    segments.push_back({world[edges.edges[first].x], world[edges.edges[first].y],
+                        glm::dot(face, light - a) < 0.0f ? -face : face, (a + b + c) / 3.0f});
   }
   return cells;
 }
@@ -108,7 +139,8 @@ bool silhouette_rectangle(const std::vector<bool> &cells, const glm::vec2 &low,
 std::vector<CasterFootprint> caster_footprints(const Scene &scene,
                                                const std::vector<WorldMesh> &meshes,
                                                const LightFrustum &frustum,
-                                               const SpotLight &light, int side) {
+                                               const SpotLight &light, int side,
+                                               EdgeLookup lookup) {
   const float texels = static_cast<float>(side);
   FootprintSpace space;
   space.light_clip = frustum.projection * frustum.view;
@@ -128,10 +160,16 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
   const LightBeam beam = light_beam(light);
 
   struct CasterEdges {
-    std::size_t index;
+    std::size_t index = 0;
     std::vector<bool> cells;
-    glm::vec4 beyond_front;  // world plane: light-view depth at least the caster's nearest
+    glm::vec4 beyond_front{0.0f};  // world plane: light-view depth at least the caster's nearest
     std::vector<FootprintSample> samples;
+    std::vector<SilhouetteSegment> segments;  // world
+    // Per segment its box in the map (texels: low x, low y, high x, high y), the whole plane
+    // for one reaching behind the light.
+    std::vector<glm::vec4> boxes;
+    EdgeErrorEstimate edge_error;
+    std::vector<float> edge_error_by_receiver;  // screen pixels, per scene object
   };
   std::vector<CasterEdges> casters;
   for (const WorldMesh &mesh : meshes) {
@@ -141,15 +179,62 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
       nearest = std::min(nearest, -(frustum.view * glm::vec4(p, 1.0f)).z);
     }
     if (!std::isfinite(nearest)) continue;
-    casters.push_back({static_cast<std::size_t>(mesh.object - scene.objects.data()),
-                       silhouette_cells(mesh, space.light_clip, light.position, texels),
-                       glm::transpose(frustum.view) * glm::vec4(0.0f, 0.0f, -1.0f, -nearest),
-                       {}});
+    CasterEdges caster;
+    caster.index = static_cast<std::size_t>(mesh.object - scene.objects.data());
+    caster.beyond_front = glm::transpose(frustum.view) * glm::vec4(0.0f, 0.0f, -1.0f, -nearest);
+    caster.edge_error_by_receiver.assign(scene.objects.size(), 0.0f);
+    caster.cells = silhouette_cells(mesh, space.light_clip, light.position, texels, caster.segments);
+    for (const SilhouetteSegment &segment : caster.segments) {
+      const glm::vec4 a = space.light_clip * glm::vec4(segment.a, 1.0f);
+      const glm::vec4 b = space.light_clip * glm::vec4(segment.b, 1.0f);
+      if (!(a.w > 0.0f && b.w > 0.0f)) {
+        caster.boxes.emplace_back(-INFINITY, -INFINITY, INFINITY, INFINITY);
+        continue;
+      }
+      const glm::vec2 p = map_texels(a, texels), q = map_texels(b, texels);
+      caster.boxes.emplace_back(glm::min(p, q), glm::max(p, q));
+    }
+    casters.push_back(std::move(caster));
   }
   if (casters.empty()) return {};
 
+  // The error along the shadows the caster's silhouette edges throw onto `part` (world, a
+  // receiver polygon's part where they can fall, unit normal `normal`): the edges whose boxes
+  // in the map meet the part's, the lookup's reach wider. On the caster itself an edge in the
+  // part's own plane is left out: its shadow there is the caster's own surface, which drew the
+  // texels on both sides of it.
+  auto add_edge_error = [&](CasterEdges &caster, std::size_t receiver, const glm::vec3 &normal,
+                            const std::vector<ClipVertex> &part, std::vector<std::size_t> &candidates) {
+    glm::vec2 low(INFINITY), high(-INFINITY);  // texels
+    for (const ClipVertex &v : part) {
+      const glm::vec2 uv = map_texels(space.light_clip * glm::vec4(v.world, 1.0f), texels);
+      low = glm::min(low, uv), high = glm::max(high, uv);
+    }
+    low -= kFilterReachTexels, high += kFilterReachTexels;
+    const float light_height = glm::dot(normal, light.position - part[0].world);  // metres
+    auto in_plane = [&](const glm::vec3 &p) {
+      return std::abs(glm::dot(normal, p - part[0].world)) <= 1e-3f * light_height;
+    };
+    candidates.clear();
+    for (std::size_t k = 0; k < caster.segments.size(); ++k) {
+      const glm::vec4 &box = caster.boxes[k];
+      if (box.x > high.x || box.z < low.x || box.y > high.y || box.w < low.y) continue;
+      if (receiver == caster.index && in_plane(caster.segments[k].a) &&
+          in_plane(caster.segments[k].b)) {
+        continue;
+      }
+      candidates.push_back(k);
+    }
+    EdgeErrorEstimate estimate;
+    add_shadow_edge_error(space, light.position, scene.camera.position, normal, part,
+                          caster.segments, candidates, lookup, estimate);
+    caster.edge_error.add(estimate);
+    caster.edge_error_by_receiver[receiver] += estimate.pixels[0];
+  };
+
   std::vector<ClipVertex> polygon, part, scratch;
   std::vector<glm::vec4> planes;
+  std::vector<std::size_t> candidates;
   for (const WorldMesh &mesh : meshes) {
     if (!mesh.object->receives_shadow) continue;
     const std::size_t receiver = static_cast<std::size_t>(mesh.object - scene.objects.data());
@@ -189,13 +274,18 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
         if (!(sample.screen_area > 0.0f)) continue;
         sample.receiver = receiver;
         caster.samples.push_back(sample);
+        add_edge_error(caster, receiver, normal, part, candidates);
       }
     }
   }
   std::vector<CasterFootprint> result;
   const float ignored = kFootprintIgnoredScreenShare * space.pixels.x * space.pixels.y;
   for (CasterEdges &caster : casters) {
-    result.push_back({caster.index, shadow_footprint(std::move(caster.samples), ignored)});
+    const auto most = std::max_element(caster.edge_error_by_receiver.begin(),
+                                        caster.edge_error_by_receiver.end());
+    result.push_back({caster.index, shadow_footprint(std::move(caster.samples), ignored),
+                      caster.edge_error,
+                      static_cast<std::size_t>(most - caster.edge_error_by_receiver.begin())});
   }
   return result;
 }
