@@ -200,29 +200,24 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
 
   // The error along the shadows the caster's silhouette edges throw onto `part` (world, a
   // receiver polygon's part where they can fall, unit normal `normal`): the edges whose boxes
-  // in the map meet the part's, the lookup's reach wider. On the caster itself an edge in the
-  // part's own plane is left out: its shadow there is the caster's own surface, which drew the
-  // texels on both sides of it.
+  // in the map meet the part's, the lookup's reach wider. Not on the caster itself: the error
+  // measure leaves out the pixels only their own object shadows, so only false shadow on its
+  // lit side would count there, and the bias (polygon offset, facet push) carries the caster's
+  // own depths back from its lit side (ripples_grazing: 107 px estimated out of the covered
+  // side against 33 allowed, 0.000% measured).
   auto add_edge_error = [&](CasterEdges &caster, std::size_t receiver, const glm::vec3 &normal,
                             const std::vector<ClipVertex> &part, std::vector<std::size_t> &candidates) {
+    if (receiver == caster.index) return;
     glm::vec2 low(INFINITY), high(-INFINITY);  // texels
     for (const ClipVertex &v : part) {
       const glm::vec2 uv = map_texels(space.light_clip * glm::vec4(v.world, 1.0f), texels);
       low = glm::min(low, uv), high = glm::max(high, uv);
     }
     low -= kFilterReachTexels, high += kFilterReachTexels;
-    const float light_height = glm::dot(normal, light.position - part[0].world);  // metres
-    auto in_plane = [&](const glm::vec3 &p) {
-      return std::abs(glm::dot(normal, p - part[0].world)) <= 1e-3f * light_height;
-    };
     candidates.clear();
     for (std::size_t k = 0; k < caster.segments.size(); ++k) {
       const glm::vec4 &box = caster.boxes[k];
       if (box.x > high.x || box.z < low.x || box.y > high.y || box.w < low.y) continue;
-      if (receiver == caster.index && in_plane(caster.segments[k].a) &&
-          in_plane(caster.segments[k].b)) {
-        continue;
-      }
       candidates.push_back(k);
     }
     EdgeErrorEstimate estimate;

@@ -34,9 +34,9 @@ struct CasterFootprint {
 // frustum, in the camera's view and beyond the caster's nearest point from the light, within
 // the lookup's reach of the texture cells the caster's silhouette from the light crosses
 // (its edges between a face towards the light and one away, and an open mesh's rim); and on
-// the same parts the error along the shadows those silhouette edges throw, read by `lookup`
-// (the percentage-closer lookup or the nearest texel). A caster shadows itself too, so it is
-// one of its own receivers.
+// the same parts of the other receivers the error along the shadows those silhouette edges
+// throw, read by `lookup` (the percentage-closer lookup or the nearest texel). A caster shadows
+// itself too, so it is one of its own receivers for the footprint.
 std::vector<CasterFootprint> caster_footprints(const Scene &scene,
                                                const std::vector<WorldMesh> &meshes,
                                                const LightFrustum &frustum,
