@@ -10,18 +10,15 @@
 #include "techniques/depth_map_facets.h"
 
 #include "techniques/stencil_volume_shadow.h"
+#include "techniques/texel_footprint.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gs::depth_map {
 namespace {
-
-// A lookup's reach around its sample, texels (the percentage-closer lookup's 2x2 and rounding).
-constexpr float kFacetReachTexels = 1.5f;
 
 glm::vec3 unit_normal(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
   const glm::vec3 n = glm::cross(b - a, c - a);
@@ -34,12 +31,9 @@ glm::vec3 unit_normal(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c
 std::vector<glm::vec3> facet_pushed_positions(const WorldMesh &mesh, const LightFrustum &frustum,
                                               const glm::vec3 &light, int side) {
   std::vector<glm::vec3> drawn = mesh.position;
-  const EdgeMesh edges = build_edge_mesh(mesh.object->mesh);
+  const EdgeMesh &edges = mesh.surface;
   if (edges.triangles.empty()) return drawn;
-  std::vector<glm::vec3> world;  // per welded position
-  for (const glm::vec3 &p : edges.positions) {
-    world.push_back(glm::vec3(mesh.object->model_to_world * glm::vec4(p, 1.0f)));
-  }
+  const std::vector<glm::vec3> &world = mesh.surface_world;  // per welded position
   const std::vector<bool> facing = light_facing(edges, world, light);
   // A texel's width in metres per metre of light-view depth (the frustum's wider tangent span).
   const float texel_per_metre =
@@ -64,7 +58,7 @@ std::vector<glm::vec3> facet_pushed_positions(const WorldMesh &mesh, const Light
     const glm::vec3 middle = 0.5f * (a + b);
     const float depth = -(frustum.view * glm::vec4(middle, 1.0f)).z;
     if (!(depth > 0.0f)) continue;
-    const float reach = kFacetReachTexels * texel_per_metre * depth;  // metres across the ray
+    const float reach = kFilterReachTexels * texel_per_metre * depth;  // metres across the ray
     const glm::vec3 ray = glm::normalize(middle - light);
     const glm::vec3 along = glm::normalize(b - a);
     // The facet `reading` near the edge reads texels the facet `drawing` drew, within the
@@ -91,22 +85,13 @@ std::vector<glm::vec3> facet_pushed_positions(const WorldMesh &mesh, const Light
       for (glm::uint corner : {edge.x, edge.y}) push[corner] = std::max(push[corner], rise);
     }
   }
-  // Back to the mesh's own vertices, joined to the welded ones by their model position.
-  std::map<std::tuple<float, float, float>, float> by_position;
-  for (std::size_t i = 0; i < edges.positions.size(); ++i) {
-    if (push[i] > 0.0f) {
-      const glm::vec3 &p = edges.positions[i];
-      by_position[{p.x, p.y, p.z}] = push[i];
-    }
-  }
-  if (by_position.empty()) return drawn;
+  // Back to the mesh's own vertices, through the position each was welded to.
   for (std::size_t i = 0; i < drawn.size(); ++i) {
-    const glm::vec3 &p = mesh.object->mesh.positions[i];
-    const auto found = by_position.find({p.x, p.y, p.z});
-    if (found == by_position.end()) continue;
+    const float pushed = push[edges.welded[i]];
+    if (!(pushed > 0.0f)) continue;
     const glm::vec3 away = drawn[i] - light;
     const float distance = glm::length(away);
-    if (distance > 0.0f) drawn[i] += away / distance * found->second;
+    if (distance > 0.0f) drawn[i] += away / distance * pushed;
   }
   return drawn;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "techniques/depth_map_passes.h"
+#include "techniques/shadow_edge_error.h"
 #include "techniques/texel_footprint.h"
 
 #include <vector>
@@ -18,21 +19,28 @@ namespace gs::depth_map {
 inline constexpr float kLargestDepthMapFootprintPx = 5.0f;
 
 // One caster's shadow under one light: the coarsest sample over the receivers (shadow_footprint,
-// the receiver named in it), and the caster's index into the scene's objects.
+// the receiver named in it), the interior error its map's texels would make along its shadow's
+// edges (shadow_edge_error.h; screen pixels) with the receiver that has the most of it, and the
+// caster's index into the scene's objects.
 struct CasterFootprint {
   std::size_t caster = 0;
   FootprintSample coarsest;
+  EdgeErrorEstimate edge_error;
+  std::size_t edge_error_receiver = 0;
 };
 
 // Per caster of `meshes` (world space) that casts: the footprint of the `side`-texel map of
 // `frustum` on every receiving triangle that faces `light`, lies in its beam, in the map's
 // frustum, in the camera's view and beyond the caster's nearest point from the light, within
 // the lookup's reach of the texture cells the caster's silhouette from the light crosses
-// (its edges between a face towards the light and one away, and an open mesh's rim). A caster
-// shadows itself too, so it is one of its own receivers.
+// (its edges between a face towards the light and one away, and an open mesh's rim); and on
+// the same parts of the other receivers the error along the shadows those silhouette edges
+// throw, read by `lookup` (the percentage-closer lookup or the nearest texel). A caster shadows
+// itself too, so it is one of its own receivers for the footprint.
 std::vector<CasterFootprint> caster_footprints(const Scene &scene,
                                                const std::vector<WorldMesh> &meshes,
                                                const LightFrustum &frustum,
-                                               const SpotLight &light, int side);
+                                               const SpotLight &light, int side,
+                                               EdgeLookup lookup);
 
 }  // namespace gs::depth_map

@@ -7,12 +7,15 @@
 #include "techniques/depth_map_facets.h"
 #include "techniques/depth_map_footprint.h"
 #include "techniques/light_beam.h"
+#include "techniques/scene_pass.h"
+#include "techniques/shadow_edge_error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -118,6 +121,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   const float largest_footprint = options_.depth_map_largest_footprint_px > 0.0f
                                       ? options_.depth_map_largest_footprint_px
                                       : kLargestDepthMapFootprintPx;
+  // The most pixels the estimated error along the frame's shadow edges may reach
+  // (shadow_edge_error.h), from the receivers' pixels once a shadow has an estimate; off with
+  // the footprint check. Casters take it in the scene's order, light by light.
+  std::optional<float> largest_edge_error;
+  if (std::isinf(options_.depth_map_largest_footprint_px)) largest_edge_error = INFINITY;
+  float edge_error_taken = 0.0f;  // by the shadows cast so far
+  const EdgeLookup lookup = options_.depth_map_linear ? EdgeLookup::kBilinear : EdgeLookup::kNearest;
   const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
   if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
@@ -158,15 +168,34 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     // out their texture.
     std::vector<bool> drawn(scene_.objects.size(), true);
     for (const CasterFootprint &footprint :
-         caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side)) {
+         caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup)) {
       const float pixels = footprint.coarsest.pixels_per_texel;
       texel_footprint_px_ = std::max(texel_footprint_px_, pixels);
-      if (!(pixels > largest_footprint)) continue;
-      drawn[footprint.caster] = false;
-      errors.push_back(texel_footprint_error(scene_, light, footprint.caster,
-                                             footprint.coarsest.receiver, pixels,
-                                             largest_footprint, side, kLargestMap));
-      warnings.push_back(errors.back());
+      if (pixels > largest_footprint) {
+        drawn[footprint.caster] = false;
+        errors.push_back(texel_footprint_error(scene_, light, footprint.caster,
+                                               footprint.coarsest.receiver, pixels,
+                                               largest_footprint, side, kLargestMap));
+        warnings.push_back(errors.back());
+        continue;
+      }
+      // The error along its shadow's edges, against what the frame's shadows before it left.
+      EdgeErrorEstimate within_budget = footprint.edge_error;
+      for (float &estimate : within_budget.pixels) estimate += edge_error_taken;
+      if (!largest_edge_error && footprint.edge_error.pixels[0] > 0.0f) {
+        largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene_, project_scene(scene_));
+      }
+      if (largest_edge_error && within_budget.pixels[0] > *largest_edge_error) {
+        drawn[footprint.caster] = false;
+        // The estimate is made up to 8 times the side: the size it names lies within that.
+        errors.push_back(shadow_edge_error_message(
+            scene_, light, footprint.caster, footprint.edge_error_receiver, edge_error_taken,
+            within_budget, *largest_edge_error, side,
+            std::min(kLargestMap, side << (EdgeErrorEstimate::kSizes - 1))));
+        warnings.push_back(errors.back());
+        continue;
+      }
+      edge_error_taken += footprint.edge_error.pixels[0];
     }
     GLuint map = 0;
     gl_.glGenTextures(1, &map);

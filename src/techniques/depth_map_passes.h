@@ -5,6 +5,7 @@
 #pragma once
 
 #include "techniques/gl_api.h"
+#include "techniques/stencil_volume_shadow.h"
 #include "techniques/technique.h"
 
 #include <glm/glm.hpp>
@@ -19,6 +20,11 @@ struct WorldMesh {
   const SceneObject *object = nullptr;
   std::vector<glm::vec3> position;  // world
   std::vector<glm::vec3> normal;    // world, unit
+  // A caster welded into one surface (model space) and its welded positions in world space,
+  // made once a frame: every light's silhouette (depth_map_footprint.cpp) and facet push
+  // (depth_map_facets.cpp) walk it. Empty for an object that casts no shadow.
+  EdgeMesh surface;
+  std::vector<glm::vec3> surface_world;  // world, one per surface.positions
 };
 
 // A light's frustum: along the light's axis, across the part of the cone's square (the beam's

@@ -46,6 +46,12 @@ std::vector<WorldMesh> world_meshes(const Scene &scene) {
           glm::vec3(object.model_to_world * glm::vec4(object.mesh.positions[i], 1.0f)));
       world.normal.push_back(glm::normalize(normal_matrix * object.mesh.normals[i]));
     }
+    if (object.casts_shadow) {
+      world.surface = build_edge_mesh(object.mesh);
+      for (const glm::vec3 &p : world.surface.positions) {
+        world.surface_world.push_back(glm::vec3(object.model_to_world * glm::vec4(p, 1.0f)));
+      }
+    }
     meshes.push_back(std::move(world));
   }
   return meshes;

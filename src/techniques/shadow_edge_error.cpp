@@ -13,19 +13,6 @@
 namespace gs {
 namespace {
 
-// A projection's NDC x, y at world point p differentiated along the plane's tangents t1, t2
-// (world, unit), scaled by half the extent [-1, 1] spans (texels or pixels): per metre.
-glm::mat2 tangent_jacobian(const glm::mat4 &clip_from_world, const glm::vec3 &p,
-                           const glm::vec2 &extent, const glm::vec3 &t1, const glm::vec3 &t2) {
-  const glm::vec4 c = clip_from_world * glm::vec4(p, 1.0f);
-  auto row = [&](int r) {  // GLM is column-major: m[column][row]
-    return glm::vec3(clip_from_world[0][r], clip_from_world[1][r], clip_from_world[2][r]);
-  };
-  const glm::vec3 dx = (row(0) - (c.x / c.w) * row(3)) / c.w * (0.5f * extent.x);
-  const glm::vec3 dy = (row(1) - (c.y / c.w) * row(3)) / c.w * (0.5f * extent.y);
-  return glm::mat2(glm::dot(dx, t1), glm::dot(dy, t1), glm::dot(dx, t2), glm::dot(dy, t2));
-}
-
 // Screen pixels an edge through world point p, running along the tangent-plane direction u
 // (unit, in t1, t2 coordinates), moves across itself when the texture moves it one texel
 // across itself: with T texels and P pixels per metre, |det P| |T u| / (|det T| |P u|), which
@@ -55,11 +42,6 @@ void keep_non_negative(float at_from_end, float at_to_end, float &from, float &t
   }
 }
 
-glm::vec2 screen_pixels(const FootprintSpace &space, const glm::vec3 &world) {
-  const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
-  return glm::vec2(c.x, c.y) / c.w * 0.5f * space.pixels;
-}
-
 // Light screen texels (x right, y down, texel centres at i + 0.5) of a world point before the
 // light (w > 0).
 glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
@@ -70,18 +52,24 @@ glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
 // Where the texture's edge lies near `on_edge` (texels), as a signed distance (texels) along
 // `away` (unit, pointing away from the covered side) from the straight edge through it: step 1
 // covers the texel centres on the edge's covered side, and the mask is shadow where the
-// filtered alpha (bilinear, or the nearest texel's) is at least half. Bisection along `away`:
-// two texels back every centre that weighs is covered, two texels on none is.
-float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, bool bilinear) {
+// filtered alpha (`lookup`) is at least half. Bisection along `away`: two texels back every
+// centre that weighs is covered, two texels on none is.
+float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeLookup lookup) {
   auto covered = [&](float x, float y) {
     return glm::dot(glm::vec2(x, y) - on_edge, away) < 0.0f ? 1.0f : 0.0f;
   };
   auto alpha = [&](const glm::vec2 &p) {
-    if (!bilinear) return covered(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
-    // Voodoo 1 bilinear: a 4-bit fraction between texel centres (the shim's default).
+    if (lookup == EdgeLookup::kNearest) {
+      return covered(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
+    }
+    // Bilinear between texel centres: the Voodoo 1's 4-bit fraction (the shim's default), or
+    // GL's percentage-closer lookup, taken as exact.
     const float x0 = std::floor(p.x - 0.5f), y0 = std::floor(p.y - 0.5f);
-    const float wx = std::floor((p.x - 0.5f - x0) * 16.0f) / 16.0f;
-    const float wy = std::floor((p.y - 0.5f - y0) * 16.0f) / 16.0f;
+    auto fraction = [&](float f) {
+      return lookup == EdgeLookup::kVoodooBilinear ? std::floor(f * 16.0f) / 16.0f : f;
+    };
+    const float wx = fraction(p.x - 0.5f - x0);
+    const float wy = fraction(p.y - 0.5f - y0);
     return (1.0f - wy) * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 0.5f) + wx * covered(x0 + 1.5f, y0 + 0.5f)) +
            wy * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 1.5f) + wx * covered(x0 + 1.5f, y0 + 1.5f));
   };
@@ -99,7 +87,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
                            const std::vector<SilhouetteSegment> &segments,
-                           const std::vector<std::size_t> &candidates, bool bilinear,
+                           const std::vector<std::size_t> &candidates, EdgeLookup lookup,
                            EdgeErrorEstimate &estimate) {
   if (polygon.size() < 3 || candidates.empty()) return;
   const glm::vec3 origin = polygon[0].world;
@@ -113,9 +101,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     area += glm::cross(polygon[i].world - origin, polygon[(i + 1) % polygon.size()].world - origin);
   }
   const float winding = glm::dot(area, normal) < 0.0f ? -1.0f : 1.0f;
-  const glm::vec3 helper = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t1 = glm::normalize(glm::cross(normal, helper));
-  const glm::vec3 t2 = glm::cross(normal, t1);
+  glm::vec3 t1, t2;
+  plane_tangents(normal, t1, t2);
   // A caster edge within this share of the light's height of the plane touches it.
   constexpr float kContactShare = 1e-3f;
   // The texture's edge strays less than this many texels from a straight edge.
@@ -166,7 +153,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
       continue;  // the caster hides the floor beyond its lit face's foot
     }
-    const glm::vec2 screen_along = screen_pixels(space, end) - screen_pixels(space, start);
+    const glm::vec2 screen_along =
+        footprint_screen_pixels(space, end) - footprint_screen_pixels(space, start);
     const float length = glm::length(screen_along);
     // How far from a visible true edge a wrong pixel is not interior error (src/measure/
     // metrics.cpp): a pixel with a 4-neighbour across the edge is its boundary, up to
@@ -208,7 +196,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
         if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
-        const float offset = texture_edge_offset(on_edge * scale, away, bilinear);  // texels
+        const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
         // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
         // caster.
         const float stray = contact ? std::max(offset, 0.0f) * per_texel
@@ -304,12 +292,7 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
         }
         polygon.swap(clipped);
       }
-      float twice_area = 0.0f;  // shoelace
-      for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
-        twice_area += p.x * q.y - p.y * q.x;
-      }
-      pixels += 0.5f * std::abs(twice_area);
+      pixels += polygon_area(polygon);
     }
   }
   return std::min(pixels, width * height);

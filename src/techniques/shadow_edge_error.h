@@ -50,11 +50,16 @@ struct EdgeErrorEstimate {
   }
 };
 
+// How the mask reads the texture where a shadow edge falls: the Voodoo 1's bilinear filter
+// (4-bit fractions), a bilinear filter with fine fractions (the depth map's percentage-closer
+// lookup over its 2x2 comparisons), or the nearest texel.
+enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
+
 // Adds to `estimate` the error along the shadows that `segments[candidates]` throw from
 // `light_position` (world) onto the convex planar receiver polygon `polygon` (world positions,
 // its unit normal `normal` facing the light, already clipped to where the shadow's edge can
 // fall: texel_footprint). Along each shadow edge the texture's edge (where the filtered alpha
-// is half: `bilinear`, or the nearest texel's) is found from the texel centres the caster
+// is half, read by `lookup`) is found from the texel centres the caster
 // covers next to it, and its distance from the true edge taken to the screen across the edge.
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
@@ -63,8 +68,19 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
                            const std::vector<SilhouetteSegment> &segments,
-                           const std::vector<std::size_t> &candidates, bool bilinear,
+                           const std::vector<std::size_t> &candidates, EdgeLookup lookup,
                            EdgeErrorEstimate &estimate);
+// The projected techniques' texture: the Voodoo 1's bilinear filter, or the nearest texel.
+inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
+                                  const glm::vec3 &camera_position, const glm::vec3 &normal,
+                                  const std::vector<ClipVertex> &polygon,
+                                  const std::vector<SilhouetteSegment> &segments,
+                                  const std::vector<std::size_t> &candidates, bool bilinear,
+                                  EdgeErrorEstimate &estimate) {
+  add_shadow_edge_error(space, light_position, camera_position, normal, polygon, segments,
+                        candidates, bilinear ? EdgeLookup::kVoodooBilinear : EdgeLookup::kNearest,
+                        estimate);
+}
 
 // Gives the cuts among `segments` (a zero lit_face: the caster cut by a pierced receiver's
 // plane, one of `cut_planes`, world, positive on the light's side) the caster's triangle they

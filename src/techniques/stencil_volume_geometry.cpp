@@ -44,10 +44,13 @@ bool may_touch_volume(const glm::vec3 &light, const Sphere &caster, const Sphere
 // Welds `mesh` by exactly equal positions into `positions` (each distinct one once) and
 // `triangles` (corners among them), leaving out triangles with two corners welded together or
 // three on one line: they have no area, bound nothing, and their edges would make a closed
-// surface look open. False, with both empty, for a non-finite position or an index out of range.
-bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::uvec3> &triangles) {
+// surface look open; `welded` gets each mesh vertex's index into `positions`. False, with all
+// three empty, for a non-finite position or an index out of range.
+bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::uvec3> &triangles,
+          std::vector<glm::uint> &welded) {
   positions.clear();
   triangles.clear();
+  welded.clear();
   const std::size_t n = mesh.positions.size();
   for (const glm::vec3 &p : mesh.positions) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
@@ -58,7 +61,7 @@ bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::
     const glm::vec3 &p = mesh.positions[a], &q = mesh.positions[b];
     return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
   });
-  std::vector<glm::uint> welded(n);
+  welded.resize(n);
   for (glm::uint i : order) {
     if (positions.empty() || positions.back() != mesh.positions[i]) {
       positions.push_back(mesh.positions[i]);
@@ -69,6 +72,7 @@ bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::
     if (t.x >= n || t.y >= n || t.z >= n) {
       positions.clear();
       triangles.clear();
+      welded.clear();
       return false;
     }
     const glm::uvec3 w(welded[t.x], welded[t.y], welded[t.z]);
@@ -84,7 +88,7 @@ bool weld(const Mesh &mesh, std::vector<glm::vec3> &positions, std::vector<glm::
 
 EdgeMesh build_edge_mesh(const Mesh &mesh) {
   EdgeMesh result;
-  if (!weld(mesh, result.positions, result.triangles)) return result;
+  if (!weld(mesh, result.positions, result.triangles, result.welded)) return result;
   for (glm::uint index = 0; index < result.triangles.size(); ++index) {
     const glm::uvec3 &w = result.triangles[index];
     for (const glm::uvec3 &edge : {glm::uvec3(w.x, w.y, index), glm::uvec3(w.y, w.z, index),
@@ -109,7 +113,8 @@ EdgeMesh build_edge_mesh(const Mesh &mesh) {
 bool is_closed_surface(const Mesh &mesh) {
   std::vector<glm::vec3> positions;
   std::vector<glm::uvec3> triangles;
-  if (!weld(mesh, positions, triangles)) return false;
+  std::vector<glm::uint> welded;
+  if (!weld(mesh, positions, triangles, welded)) return false;
   // Every walk of an undirected edge {low, high} filed under its low corner (a counting sort),
   // as high << 1 plus 1 when it goes low -> high; each corner's few walks are then sorted by
   // high, and build_edge_mesh's balance (walks up minus walks down) summed per edge.

@@ -17,6 +17,7 @@ namespace gs {
 // mesh's corners are often split for flat normals (a box's faces) or seams.
 struct EdgeMesh {
   std::vector<glm::vec3> positions;   // model space, each distinct position once
+  std::vector<glm::uint> welded;      // per vertex of the mesh: its position's index in `positions`
   std::vector<glm::uvec3> triangles;  // into `positions`, CCW from outside, three distinct corners
                                       // not on one line
   // Every triangle's three edges (from, to, triangle), sorted so that the uses of one undirected

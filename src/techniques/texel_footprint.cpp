@@ -13,19 +13,6 @@
 namespace gs {
 namespace {
 
-// The gradients (world space, per metre) of a projection's NDC x and y at world point p, scaled
-// by half the extent [-1, 1] spans (texels or pixels).
-void ndc_gradients(const glm::mat4 &clip_from_world, const glm::vec3 &p, const glm::vec2 &extent,
-                   glm::vec3 &dx, glm::vec3 &dy) {
-  const glm::vec4 c = clip_from_world * glm::vec4(p, 1.0f);
-  // Rows of the matrix (GLM is column-major: m[column][row]).
-  auto row = [&](int r) {
-    return glm::vec3(clip_from_world[0][r], clip_from_world[1][r], clip_from_world[2][r]);
-  };
-  dx = (row(0) - (c.x / c.w) * row(3)) / c.w * (0.5f * extent.x);
-  dy = (row(1) - (c.y / c.w) * row(3)) / c.w * (0.5f * extent.y);
-}
-
 // Pixels per texel at world point p on a plane with tangents t1, t2 (world space), across the
 // direction the texel is most stretched in: the mapping's smallest singular value. Where the
 // light grazes a surface its texels stretch along the light's direction, but so do the shadow
@@ -35,12 +22,9 @@ void ndc_gradients(const glm::mat4 &clip_from_world, const glm::vec3 &p, const g
 // 0.05% interior error (docs/results.md).
 float stretch_at(const FootprintSpace &space, const glm::vec3 &p, const glm::vec3 &t1,
                  const glm::vec3 &t2) {
-  glm::vec3 tx, ty, sx, sy;
-  ndc_gradients(space.light_clip, p, glm::vec2(space.texels), tx, ty);
-  ndc_gradients(space.camera_clip, p, space.pixels, sx, sy);
-  // Texels and pixels per metre along the plane's tangents: 2x2 Jacobians (column-major).
-  const glm::mat2 texels(glm::dot(tx, t1), glm::dot(ty, t1), glm::dot(tx, t2), glm::dot(ty, t2));
-  const glm::mat2 pixels(glm::dot(sx, t1), glm::dot(sy, t1), glm::dot(sx, t2), glm::dot(sy, t2));
+  // Texels and pixels per metre along the plane's tangents.
+  const glm::mat2 texels = tangent_jacobian(space.light_clip, p, glm::vec2(space.texels), t1, t2);
+  const glm::mat2 pixels = tangent_jacobian(space.camera_clip, p, space.pixels, t1, t2);
   const float det = glm::determinant(texels);
   // A plane edge-on to the light: one texel spans the whole plane. Finite, so it compares.
   if (!(std::abs(det) > 1e-12f)) return 1e9f;
@@ -57,6 +41,37 @@ float stretch_at(const FootprintSpace &space, const glm::vec3 &p, const glm::vec
 
 }  // namespace
 
+void plane_tangents(const glm::vec3 &normal, glm::vec3 &t1, glm::vec3 &t2) {
+  const glm::vec3 helper = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  t1 = glm::normalize(glm::cross(normal, helper));
+  t2 = glm::cross(normal, t1);
+}
+
+glm::mat2 tangent_jacobian(const glm::mat4 &clip_from_world, const glm::vec3 &p,
+                           const glm::vec2 &extent, const glm::vec3 &t1, const glm::vec3 &t2) {
+  const glm::vec4 c = clip_from_world * glm::vec4(p, 1.0f);
+  auto row = [&](int r) {  // GLM is column-major: m[column][row]
+    return glm::vec3(clip_from_world[0][r], clip_from_world[1][r], clip_from_world[2][r]);
+  };
+  const glm::vec3 dx = (row(0) - (c.x / c.w) * row(3)) / c.w * (0.5f * extent.x);
+  const glm::vec3 dy = (row(1) - (c.y / c.w) * row(3)) / c.w * (0.5f * extent.y);
+  return glm::mat2(glm::dot(dx, t1), glm::dot(dy, t1), glm::dot(dx, t2), glm::dot(dy, t2));
+}
+
+glm::vec2 footprint_screen_pixels(const FootprintSpace &space, const glm::vec3 &world) {
+  const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
+  return glm::vec2(c.x, c.y) / c.w * 0.5f * space.pixels;
+}
+
+float polygon_area(const std::vector<glm::vec2> &polygon) {
+  float twice_area = 0.0f;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::vec2 &a = polygon[i], &b = polygon[(i + 1) % polygon.size()];
+    twice_area += a.x * b.y - a.y * b.x;
+  }
+  return 0.5f * std::abs(twice_area);
+}
+
 FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &normal,
                                 const std::vector<glm::vec4> &planes,
                                 std::vector<ClipVertex> &world, std::vector<ClipVertex> &scratch) {
@@ -66,22 +81,15 @@ FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &no
     clip_polygon(world, plane, scratch);
   }
   if (world.size() < 3) return sample;
-  const glm::vec3 helper = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t1 = glm::normalize(glm::cross(normal, helper));
-  const glm::vec3 t2 = glm::cross(normal, t1);
+  glm::vec3 t1, t2;
+  plane_tangents(normal, t1, t2);
   // Screen pixels of the corners (inside the camera's view, so w > 0), for the area.
   std::vector<glm::vec2> screen;
   for (const ClipVertex &v : world) {
     sample.pixels_per_texel = std::max(sample.pixels_per_texel, stretch_at(space, v.world, t1, t2));
-    const glm::vec4 c = space.camera_clip * glm::vec4(v.world, 1.0f);
-    screen.push_back(glm::vec2(c.x, c.y) / c.w * 0.5f * space.pixels);
+    screen.push_back(footprint_screen_pixels(space, v.world));
   }
-  float twice_area = 0.0f;  // shoelace
-  for (std::size_t i = 0; i < screen.size(); ++i) {
-    const glm::vec2 &a = screen[i], &b = screen[(i + 1) % screen.size()];
-    twice_area += a.x * b.y - a.y * b.x;
-  }
-  sample.screen_area = 0.5f * std::abs(twice_area);
+  sample.screen_area = polygon_area(screen);
   return sample;
 }
 

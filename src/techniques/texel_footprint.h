@@ -28,6 +28,12 @@ inline constexpr float kLargestPointSampledFootprintPx = 3.0f;
 // those pixels were wrong, the frame would stay within it.
 inline constexpr float kFootprintIgnoredScreenShare = 0.0005f;
 
+// How far a filtered lookup reads around its sample, texels: bilinear filtering (and the depth
+// map's percentage-closer lookup) weighs the 2x2 texels whose centres lie within one texel of
+// it; half a texel more for rounding. Where a shadow edge can fall is within this of the
+// caster's silhouette in the texture.
+inline constexpr float kFilterReachTexels = 1.5f;
+
 // The two projections the footprint compares, and where a shadow can fall.
 struct FootprintSpace {
   glm::mat4 light_clip{1.0f};   // world to the shadow texture's light clip space
@@ -38,6 +44,23 @@ struct FootprintSpace {
   // shadow can reach: beyond its front, inside the camera's view.
   std::vector<glm::vec4> planes;
 };
+
+// Unit tangents t1, t2 (world space) of a plane with unit normal `normal`: the basis both
+// projections are differentiated along on a receiver's plane.
+void plane_tangents(const glm::vec3 &normal, glm::vec3 &t1, glm::vec3 &t2);
+
+// A projection's NDC x, y at world point p differentiated along a plane's tangents t1, t2
+// (world, unit), scaled by half the extent [-1, 1] spans (texels or pixels): texels or pixels
+// per metre on the plane, a 2x2 Jacobian (column-major: column k along t(k+1)).
+glm::mat2 tangent_jacobian(const glm::mat4 &clip_from_world, const glm::vec3 &p,
+                           const glm::vec2 &extent, const glm::vec3 &t1, const glm::vec3 &t2);
+
+// The screen position (pixels from the screen's centre, y up) of a world point before the
+// camera (camera clip w > 0).
+glm::vec2 footprint_screen_pixels(const FootprintSpace &space, const glm::vec3 &world);
+
+// The area of a simple polygon (any units squared) from its corners in order (shoelace).
+float polygon_area(const std::vector<glm::vec2> &polygon);
 
 // One receiver polygon's part where the shadow can fall: its largest footprint (screen pixels a
 // texel spans across the direction it is stretched in, texel_footprint.cpp) and its area on
