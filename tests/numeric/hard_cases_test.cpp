@@ -165,6 +165,7 @@ TEST(HardCases, GrazingLightGivesNoAcneAtTheDefaultBias) {
   bits16.depth_map_bits = 16;
   gs::TechniqueOptions no_slope;  // units only: acne over most of the plane from 30 degrees
   no_slope.depth_bias_slope = 0.0f;
+  no_slope.depth_bias_receiver = 0.0f;  // nor the receiver's own slope (depth_map_lookup.h)
   for (float degrees : {0.0f, 45.0f, 60.0f, 75.0f, 85.0f, 89.0f}) {
     const std::string angle = " at " + std::to_string(static_cast<int>(degrees)) + " degrees";
     const gs::Scene scene = hard_cases::grazing_plane(degrees);
