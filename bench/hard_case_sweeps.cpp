@@ -237,18 +237,25 @@ bool classes() {
 // (the audit's waves, the class "curved receivers in their own shadow", waves_low_sun varied).
 // Against them, faces seen almost edge-on close to a wide light with a coarse map, which the
 // slope term carried back past the receiver behind them (y6, k1 with the light moved 0.4, 0.3,
-// -0.3 and -0.5, -0.35, 0.2 m). Percentage-closer and nearest filtering, slope factors 1..16,
-// units 4 and 16, without and with the facet bias (depth_map_facets.h), the slope term bounded
-// to 0.01, 0.03, 0.1, 0.3 (the default), 0.5 of the depth or unbounded.
+// -0.3 and -0.5, -0.35, 0.2 m), boxes sunk in a floor with their shadows close behind steep lit
+// faces (z7, z8) and the corridor's walls at 512 texels (a2, acne at the walls' feet when the
+// push is bounded too tightly). Percentage-closer and nearest filtering, slope factors 1..4,
+// without and with the facet bias (depth_map_facets.h), the push bounded to 1.5 to 8 texels'
+// widths or unbounded, the receiver's own slope taken off at 0 to 1 (depth_map_lookup.h); the
+// default: slope 1, units 4, facets, bound 6, receiver 0.5.
 bool acne() {
   std::vector<Column> columns;
   for (const char *name : {"tilted_plate_oblique", "light_facing_camera_posts", "box_resting",
                            "box_over_floor", "dueling_frusta", "audit/i6_post_in_valley_hill_casts",
                            "waves_low_sun", "dunes_side_light", "ripples_grazing",
-                           "audit/y6_light_inside_tube_moved"}) {
+                           "audit/y6_light_inside_tube_moved", "audit/z7_box_turned_sunk_wall_map64",
+                           "audit/z8_box_sunk_map32"}) {
     const std::string file = name;
     columns.push_back({file.substr(file.find_last_of('/') + 1), {name, hard_cases::load(file + ".json")}});
   }
+  gs::Scene corridor = hard_cases::load("audit/a2_corridor_walls.json");
+  corridor.lights[0].shadow_size = 512;
+  columns.push_back({"a2 at 512", {"a2 at 512", corridor}});
   for (const glm::vec3 &offset : {glm::vec3(0.4f, 0.3f, -0.3f), glm::vec3(-0.5f, -0.35f, 0.2f)}) {
     char label[64];
     std::snprintf(label, sizeof label, "k1 light %+g %+g %+g", static_cast<double>(offset.x),
@@ -270,24 +277,27 @@ bool acne() {
   }
   std::vector<gs::BenchConfiguration> configurations;
   for (bool linear : {true, false}) {
-    for (const auto &[slope, units, facets, bound] :
-         std::vector<std::tuple<float, float, bool, float>>{
-             {1, 4, false, 0.3f}, {2, 4, false, 0.3f}, {2, 16, false, 0.3f}, {4, 4, false, 0.3f},
-             {8, 4, false, 0.3f}, {16, 4, false, 0.3f}, {1, 4, true, 0.3f}, {2, 4, true, 0.3f},
-             {4, 4, true, 0.3f}, {2, 4, true, 0.01f}, {2, 4, true, 0.03f}, {2, 4, true, 0.1f},
-             {2, 4, true, 0.5f}, {2, 4, true, INFINITY}, {8, 4, true, INFINITY}}) {
-      gs::BenchConfiguration c = depth_map(slope, units);
+    for (const auto &[slope, facets, bound, receiver] :
+         std::vector<std::tuple<float, bool, float, float>>{
+             {2, true, INFINITY, 0.0f}, {2, true, 1.5f, 1.0f}, {2, true, 2.5f, 0.5f},
+             {2, true, 4.0f, 0.0f}, {2, true, 4.0f, 0.5f}, {2, true, 8.0f, 0.5f},
+             {1, true, 4.0f, 0.5f}, {1, true, 4.0f, 1.0f}, {1, true, 6.0f, 0.0f},
+             {1, true, 6.0f, 0.25f}, {1, true, 6.0f, 0.5f}, {1, false, 6.0f, 0.5f},
+             {1, true, 8.0f, 0.5f}, {4, true, 6.0f, 0.5f}}) {
+      gs::BenchConfiguration c = depth_map(slope, 4.0f);
       c.options.depth_map_linear = linear;
       c.options.depth_map_facet_bias = facets;
       c.options.depth_bias_bound = bound;
+      c.options.depth_bias_receiver = receiver;
       c.options.depth_map_largest_footprint_px = INFINITY;  // every scene measured, none refused
-      std::string bounded = " unbounded";
+      char text[64];
       if (std::isfinite(bound)) {
-        char text[32];
-        std::snprintf(text, sizeof text, " bound %g", static_cast<double>(bound));
-        bounded = text;
+        std::snprintf(text, sizeof text, " bound %g receiver %g", static_cast<double>(bound),
+                      static_cast<double>(receiver));
+      } else {
+        std::snprintf(text, sizeof text, " unbounded receiver %g", static_cast<double>(receiver));
       }
-      c.settings += std::string(facets ? " facets" : "") + bounded + (linear ? " pcf" : " nearest");
+      c.settings += std::string(facets ? " facets" : "") + text + (linear ? " pcf" : " nearest");
       configurations.push_back(c);
     }
   }

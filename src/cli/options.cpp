@@ -47,10 +47,16 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
       ->check(CLI::Range(0.0f, 10000.0f))
       ->capture_default_str();
   command.add_option("--bias-bound", choice.bias_bound,
-                     "depth-map: the slope term moves a caster back by at most this share of its "
-                     "distance from the light")
+                     "depth-map: the slope term moves a caster back by at most this many texels' "
+                     "widths at its depth")
       ->check(finite_number())
       ->check(CLI::Range(0.0f, 1000.0f))
+      ->capture_default_str();
+  command.add_option("--bias-receiver", choice.bias_receiver,
+                     "depth-map: a receiver's depth is lowered by this share of its own depth "
+                     "change across a texel")
+      ->check(finite_number())
+      ->check(CLI::Range(0.0f, 100.0f))
       ->capture_default_str();
   command.add_flag("--nearest", choice.nearest,
                    "depth-map: nearest comparison instead of percentage-closer filtering");
@@ -72,6 +78,7 @@ TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_siz
   all.depth_bias_slope = choice.bias_slope;
   all.depth_bias_units = choice.bias_units;
   all.depth_bias_bound = choice.bias_bound;
+  all.depth_bias_receiver = choice.bias_receiver;
   all.depth_map_linear = !choice.nearest;
   using Mode = TechniqueOptions::VolumeMode;
   all.volume_mode = choice.volume == "zpass"   ? Mode::ZPass

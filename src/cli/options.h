@@ -15,8 +15,9 @@ struct TechniqueChoice {
   std::string name = "projected";
   bool direct_path = false, point = false, affine = false, auto_size = false;
   std::string alpha = "constant";
-  float bias_slope = 2.0f, bias_units = 4.0f;  // depth-map polygon offset (technique.h)
-  float bias_bound = 0.3f;  // depth-map: the slope term's largest share of the depth (technique.h)
+  float bias_slope = 1.0f, bias_units = 4.0f;  // depth-map polygon offset (technique.h)
+  float bias_bound = 6.0f;     // depth-map: the slope term's largest push, texels (technique.h)
+  float bias_receiver = 0.5f;  // depth-map: the receiver's own slope taken off (technique.h)
   bool nearest = false;                       // depth-map filtering
   std::string volume = "auto";                // stencil-volume mode
 };

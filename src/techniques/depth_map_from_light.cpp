@@ -133,21 +133,23 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     warnings.push_back("depth-map: " + std::to_string(options_.depth_map_bits) +
                        "-bit depth maps do not exist (16 or 24); using 24");
   }
-  // The bound is a share of the depth: below 0 (or NaN) the slid copy would come nearer the light
+  // The bound is a number of texels: below 0 (or NaN) the slid copy would come nearer the light
   // than the caster and shadow what it lights, so such a value leaves the slope term unbounded.
   const bool bounded = std::isfinite(options_.depth_bias_bound) && options_.depth_bias_bound >= 0.0f;
   if (!bounded && !std::isinf(options_.depth_bias_bound)) {
     warnings.push_back("depth-map: a slope bound of " + std::to_string(options_.depth_bias_bound) +
-                       " is not a share of the depth (0 or more); the slope term is unbounded");
+                       " is not a number of texels (0 or more); the slope term is unbounded");
   }
   for (std::size_t light = 0; light < scene_.lights.size(); ++light) {
     maps_.push_back(0);
+    sides_.push_back(1);
     if (scene_.lights[light].is_projector()) {  // slides cast no shadows: no map, gate open
       frustums_.emplace_back();
       continue;
     }
     const GLsizei side =
         options_.projected.size > 0 ? options_.projected.size : scene_.lights[light].shadow_size;
+    sides_.back() = side;
     frustums_.push_back(fit_light_frustum(meshes_, scene_.lights[light], light, side));
     const LightFrustum &frustum = frustums_.back();
     if (side < kSmallestMap || side > kLargestMap) {
@@ -241,17 +243,27 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       if (pushed) facets = facet_pushed_positions(mesh, frustum, scene_.lights[light].position, side);
       const std::vector<glm::vec3> &positions = pushed ? facets : mesh.position;  // world
       draw_caster(mesh, positions);
-      // The slope term bounded: the same caster again with every point slid along its own ray
-      // to (1 + bound) times its light-view depth (the light is the view's origin, so it covers
-      // the same texels), units only. GL_LESS keeps the nearer of the two in each texel, so no
-      // face is carried back by more than that share of its depth: a face the light sees almost
-      // edge-on spans much of its depth in one coarse texel, and its slope term alone passed the
-      // receiver behind it (y6, k1 with the light moved: 1 to 16% false light).
+      // The slope term and the facet push bounded: the same caster again from its own positions
+      // with every point slid back along its own ray (the light is the view's origin, so it
+      // covers the same texels) by `bound` texels' widths at its light-view depth, units only.
+      // GL_LESS keeps the nearer of the two in each texel, so no point is carried back by more
+      // than a few texels: a face the light sees almost edge-on spans much of its depth in one
+      // texel, and its slope term alone passed the receiver behind it (y6, k1 with the light
+      // moved: 1 to 16% false light; a box on a floor under a 64-texel map, 1.7%). Its own acne
+      // the receiver's bias takes (depth_map_lookup.h).
       if (bounded) {
         const glm::vec3 &origin = scene_.lights[light].position;  // world
+        // A texel's width in metres per metre of light-view depth (the wider of its two sides).
+        const float texel_per_metre =
+            std::max(2.0f / frustum.projection[0][0], 2.0f / frustum.projection[1][1]) /
+            static_cast<float>(side);
         slid.clear();
-        for (const glm::vec3 &p : positions)
-          slid.push_back(origin + (p - origin) * (1.0f + options_.depth_bias_bound));
+        for (const glm::vec3 &p : mesh.position) {
+          const float depth = -(frustum.view * glm::vec4(p, 1.0f)).z;  // light view, metres
+          const float distance = glm::length(p - origin);
+          const float back = options_.depth_bias_bound * texel_per_metre * std::max(depth, 0.0f);
+          slid.push_back(distance > 0.0f ? p + (p - origin) * (back / distance) : p);
+        }
         gl_.glPolygonOffset(0.0f, options_.depth_bias_units);
         draw_caster(mesh, slid);
         gl_.glPolygonOffset(options_.depth_bias_slope, options_.depth_bias_units);

@@ -60,10 +60,14 @@ class Passes {
 
  private:
   void use_camera();
-  // Unit 0: light `light`'s map compared with `compare` (LEQUAL: 1 where lit); unit 1: the q
-  // gate. Texgen planes are given while the modelview is the camera's view, so they act on
-  // world coordinates (Everitt et al., Appendix A).
+  // Unit 0: light `light`'s map compared with `compare` (LEQUAL: 1 where lit), its coordinates
+  // per corner from draw_receiver; unit 1: the q gate. The gate's texgen planes are given while
+  // the modelview is the camera's view, so they act on world coordinates (Everitt et al.,
+  // Appendix A).
   void bind_shadow_units(std::size_t light, GLenum compare);
+  // A receiver's triangles, three world corners each, with their colours and the bound light's
+  // map coordinates lowered by each triangle's own depth slope (depth_map_lookup.h).
+  void draw_receiver(const std::vector<glm::vec3> &corners, const std::vector<glm::vec4> &colors);
   void release_shadow_units();
   void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
   // Step 1: a caster's triangles at `positions` (world), with whatever offset is set.
@@ -76,6 +80,9 @@ class Passes {
   std::vector<WorldMesh> meshes_;
   std::vector<LightFrustum> frustums_;  // per light
   std::vector<GLuint> maps_;            // per light; 0: the light casts no shadow
+  std::vector<int> sides_;              // per light, the map's side in texels
+  glm::mat4 to_map_{1.0f};              // world to the bound light's texture coordinates
+  int bound_side_ = 1;                  // the bound light's map side, texels
   GLuint framebuffer_ = 0;              // step 1's, depth only
   GLuint gate_ = 0;                     // the q gate's step texture
   GLint target_framebuffer_ = 0;        // the shim's, holding Glide's back buffer

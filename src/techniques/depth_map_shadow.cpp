@@ -6,6 +6,7 @@
 #include "techniques/depth_map_shadow.h"
 #include "techniques/step_clock.h"
 
+#include "techniques/depth_map_lookup.h"
 #include "techniques/depth_map_passes.h"
 #include "techniques/facing_triangles.h"
 #include "techniques/gl_api.h"
@@ -153,10 +154,21 @@ void Passes::lit_passes() {
       gl_.glActiveTexture(GL_TEXTURE0);
       if (maps_[light] != 0 && mesh.object->receives_shadow) {
         gl_.glEnable(GL_TEXTURE_2D);
+        // Unshared corners from the same world positions (the depths the ambient pass wrote),
+        // each triangle with its own lowered depth.
+        std::vector<glm::vec3> corners;
+        std::vector<glm::vec4> corner_colors;
+        for (const glm::uvec3 &triangle : mesh.object->mesh.triangles) {
+          for (int k = 0; k < 3; ++k) {
+            corners.push_back(mesh.position[triangle[k]]);
+            corner_colors.push_back(colors[triangle[k]]);
+          }
+        }
+        draw_receiver(corners, corner_colors);
       } else {
         gl_.glDisable(GL_TEXTURE_2D);
+        draw(mesh, colors);
       }
-      draw(mesh, colors);
     }
     if (beam) beam->release();
   }
@@ -197,9 +209,7 @@ void Passes::mask_passes() {
       // Unshared corners from the same world positions: the depths the ambient pass wrote.
       const FacingTriangles triangles =
           facing_triangles(mesh.position, mesh.object->mesh.triangles, spot.position);
-      gl_.glVertexPointer(3, GL_FLOAT, 0, triangles.position.data());
-      gl_.glColorPointer(4, GL_FLOAT, 0, triangles.color.data());
-      gl_.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.position.size()));
+      draw_receiver(triangles.position, triangles.color);
     }
     footprint.release();
   }
@@ -216,7 +226,8 @@ void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
   // S: light clip to texture coordinates, s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.
   const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
                          glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-  const glm::mat4 to_map = bias * light_clip;
+  to_map_ = bias * light_clip;
+  bound_side_ = sides_[light];
   glm::mat4 to_gate(0.0f);  // s = kGateSlope q, t = 0, q = 1
   to_gate[0][0] = kGateSlope * light_clip[0][3];
   to_gate[1][0] = kGateSlope * light_clip[1][3];
@@ -224,21 +235,20 @@ void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
   to_gate[3][0] = kGateSlope * light_clip[3][3];
   to_gate[3][3] = 1.0f;
   const GLuint textures[2] = {maps_[light], gate_};
-  const glm::mat4 *planes[2] = {&to_map, &to_gate};
   for (int unit = 0; unit < 2; ++unit) {
     gl_.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     gl_.glBindTexture(GL_TEXTURE_2D, textures[unit]);
     gl_.glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);  // alpha x= texture alpha
-    const GLenum coords[4] = {GL_S, GL_T, GL_R, GL_Q};
-    const GLenum enables[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
-                               GL_TEXTURE_GEN_Q};
-    for (int row = 0; row < 4; ++row) {
-      const glm::mat4 &m = *planes[unit];
-      const GLfloat plane[4] = {m[0][row], m[1][row], m[2][row], m[3][row]};
-      gl_.glTexGeni(coords[row], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-      gl_.glTexGenfv(coords[row], GL_EYE_PLANE, plane);
-      gl_.glEnable(enables[row]);
-    }
+  }
+  // Unit 1 (active): the gate's coordinates by texgen; unit 0's come per corner (draw_receiver).
+  const GLenum coords[4] = {GL_S, GL_T, GL_R, GL_Q};
+  const GLenum enables[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+                             GL_TEXTURE_GEN_Q};
+  for (int row = 0; row < 4; ++row) {
+    const GLfloat plane[4] = {to_gate[0][row], to_gate[1][row], to_gate[2][row], to_gate[3][row]};
+    gl_.glTexGeni(coords[row], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    gl_.glTexGenfv(coords[row], GL_EYE_PLANE, plane);
+    gl_.glEnable(enables[row]);
   }
   gl_.glEnable(GL_TEXTURE_2D);  // unit 1, the gate; unit 0 per object
   if (maps_[light] != 0) {
@@ -256,6 +266,18 @@ void Passes::release_shadow_units() {
       gl_.glDisable(gen);
     }
   }
+}
+
+void Passes::draw_receiver(const std::vector<glm::vec3> &corners,
+                           const std::vector<glm::vec4> &colors) {
+  const std::vector<glm::vec4> coords =
+      biased_map_coords(corners, to_map_, bound_side_, options_.depth_bias_receiver);
+  gl_.glEnableClientState(GL_TEXTURE_COORD_ARRAY);  // client unit 0, the map's
+  gl_.glTexCoordPointer(4, GL_FLOAT, 0, coords.data());
+  gl_.glVertexPointer(3, GL_FLOAT, 0, corners.data());
+  gl_.glColorPointer(4, GL_FLOAT, 0, colors.data());
+  gl_.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners.size()));
+  gl_.glDisableClientState(GL_TEXTURE_COORD_ARRAY);
 }
 
 void Passes::draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors) {

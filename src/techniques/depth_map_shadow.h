@@ -12,8 +12,9 @@ namespace gs {
 
 // The technique "depth-map": map side options.projected.size (0: each light's shadow_size),
 // glPolygonOffset(depth_bias_slope, depth_bias_units) in the light's pass with the slope term's
-// push bounded to depth_bias_bound of the depth from the light, GL_LINEAR (2x2 percentage-closer)
-// or GL_NEAREST lookups, depth_map_bits of depth (16 or 24).
+// push bounded to depth_bias_bound texels' widths, each receiver triangle's depth lowered by
+// depth_bias_receiver of its own slope, GL_LINEAR (2x2 percentage-closer) or GL_NEAREST lookups,
+// depth_map_bits of depth (16 or 24).
 std::unique_ptr<ShadowTechnique> make_depth_map_shadow(const TechniqueOptions &options);
 
 }  // namespace gs

@@ -43,17 +43,24 @@ class ShadowTechnique {
 
 struct TechniqueOptions {
   ProjectedShadowOptions projected;  // projected texture; its `size` is every map's side
-  // Depth map: glPolygonOffset factor and units. Slope 2, units 4: chosen with the acne sweep
-  // (bench/hard_case_sweeps acne, docs/results.md): slope 1 leaves acne on casters' silhouettes
-  // with nearest filtering, 2 removes it, and nothing up to 8 lifts a shadow off its contact
-  // line (peter-panning starts at 64).
-  float depth_bias_slope = 2.0f;
+  // Depth map: glPolygonOffset factor and units, the slope term's bound and the receiver's own
+  // slope, chosen together with the acne sweep (bench/hard_case_sweeps acne,
+  // docs/hard_cases_results.md). A receiver's own plane, read across the lookup's texels, is
+  // taken off its depth (receiver 0.5: the 2x2 lookup's half-texel reach along each axis;
+  // depth_map_lookup.h), so the caster's push needs to cover only what its neighbours read: the
+  // floor at the foot of a steep lit wall (the corridor a2 at 512 texels: 0.28% acne at a bound
+  // of 2.5 texels, 0.005% at 4, none at 6). The push is bounded to 6 texels' widths at the caster's depth: a share of the depth
+  // (0.3) let a box's steep faces pass the floor close behind them (z7, z8: 0.3 to 1.6% false
+  // light), and 8 texels with slope 2 let the tube's walls pass the floor in y6 (0.12%).
+  float depth_bias_slope = 1.0f;
   float depth_bias_units = 4.0f;     // depth map: glPolygonOffset units
-  // Depth map: the slope term moves a caster back by at most this share of its light-view
-  // depth (depth_map_from_light.cpp); infinity: unbounded. 0.3, chosen with the acne sweep and
-  // everitt-5's 32-texel map: at 0.1 a few pixels of acne come back there (at 0.01 on the
-  // sweep's curved receivers), at 0.5 y6's tube passes the floor again (0.6% false light).
-  float depth_bias_bound = 0.3f;
+  // Depth map: the slope term and the facet bias move a caster point back along its ray by at
+  // most this many texels' world widths at its light-view depth (depth_map_from_light.cpp);
+  // infinity: unbounded.
+  float depth_bias_bound = 6.0f;
+  // Depth map: each receiver triangle compares its depth lowered by this share of its own depth
+  // change across one texel along each map axis (depth_map_lookup.h); 0: none.
+  float depth_bias_receiver = 0.5f;
   bool depth_map_linear = true;      // depth map: percentage-closer (GL_LINEAR) or nearest
   int depth_map_bits = 24;           // depth map: 16 or 24-bit depth texture
   // Depth map: a caster whose map texels span more screen pixels than this where its shadow

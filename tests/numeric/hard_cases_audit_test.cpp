@@ -47,8 +47,9 @@ TEST(HardCases, ClosedBoxAroundTheLightDarkensEverythingOutside) {
 // success before the slope term was bounded. The box's faces a few centimetres from the light
 // are seen almost edge-on from it through texels 10 degrees wide, and glPolygonOffset's slope
 // term pushed them back past the floor. With the push bounded to 0.3 of each point's depth from
-// the light (TechniqueOptions::depth_bias_bound) they are within the budget; unbounded, the
-// second place still fails, so the check sees the fault.
+// the light they were within the budget, and so they are with the push bounded to a few
+// texels' widths (TechniqueOptions::depth_bias_bound); unbounded at slope 2 without the
+// receiver's bias, the second place still fails, so the check sees the fault.
 TEST(HardCases, ClosedBoxAroundTheLightMovedDepthMap) {
   for (const glm::vec3 &offset : {kCageOffsets[0], kCageOffsets[1], glm::vec3(-0.3f, 0.45f, -0.5f),
                                   glm::vec3(0.55f, 0.0f, 0.0f)}) {
@@ -61,14 +62,16 @@ TEST(HardCases, ClosedBoxAroundTheLightMovedDepthMap) {
                                 {}, true);
   const gs::Scene scene = cage_with_light_moved(kCageOffsets[1]);
   const Truth truth = truth_of(scene);
-  gs::TechniqueOptions unbounded;
+  gs::TechniqueOptions unbounded;  // the push before any bound: slope 2, no receiver bias
   unbounded.depth_bias_bound = INFINITY;
+  unbounded.depth_bias_slope = 2.0f;
+  unbounded.depth_bias_receiver = 0.0f;
   const Outcome o = run("depth-map", scene, truth, unbounded);
   report("k1, the light moved, depth-map unbounded", o);
   EXPECT_GT(o.errors.false_light_interior, 0.05);  // a share: 16% measured
   // A bound below 0 would slide the copy nearer the light than the caster: refused with a
   // warning, and the frame drawn unbounded (the same fault).
-  gs::TechniqueOptions negative;
+  gs::TechniqueOptions negative = unbounded;
   negative.depth_bias_bound = -0.5f;
   const Outcome refused = run("depth-map", scene, truth, negative);
   ASSERT_FALSE(refused.warnings.empty());

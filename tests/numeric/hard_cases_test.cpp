@@ -156,15 +156,17 @@ TEST(HardCases, CoordinatesFarOutsideTheMapClampToNoShadow) {
 // every pixel a technique darkens is acne. Only the depth map compares a surface with itself;
 // the projected and planar techniques never shadow a caster with its own shadow, and stencil
 // volumes skip the open plane (with a warning).
-// The depth map's default bias (glPolygonOffset 1, 4) removes it at every angle to 89 degrees,
-// 16 or 24 bits: the slope term grows with the tilt as the depth step across a texel does
-// (bench/hard_case_sweeps tilt: a slope factor under 1 leaves acne at every tilt from 30
-// degrees, units alone up to 64 never remove it).
+// The depth map's default bias removes it at every angle to 89 degrees, 16 or 24 bits: the
+// receiver's own slope taken off its depth (depth_map_lookup.h) grows with the tilt as the depth
+// step across a texel does, as glPolygonOffset's slope term does (bench/hard_case_sweeps tilt: a
+// slope factor under 1 alone leaves acne at every tilt from 30 degrees, units alone up to 64
+// never remove it).
 TEST(HardCases, GrazingLightGivesNoAcneAtTheDefaultBias) {
   gs::TechniqueOptions bits16;
   bits16.depth_map_bits = 16;
   gs::TechniqueOptions no_slope;  // units only: acne over most of the plane from 30 degrees
   no_slope.depth_bias_slope = 0.0f;
+  no_slope.depth_bias_receiver = 0.0f;  // nor the receiver's own slope (depth_map_lookup.h)
   for (float degrees : {0.0f, 45.0f, 60.0f, 75.0f, 85.0f, 89.0f}) {
     const std::string angle = " at " + std::to_string(static_cast<int>(degrees)) + " degrees";
     const gs::Scene scene = hard_cases::grazing_plane(degrees);
