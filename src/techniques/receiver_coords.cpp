@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -284,6 +285,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
   std::vector<std::size_t> candidates;
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
+  std::vector<DrawnPiece> drawn_pieces;
   EdgeErrorEstimate receiver_edge_error;  // of the receiver in hand
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
   // corners, and their light clip coordinates), and the error along the shadow's edges there.
@@ -377,11 +379,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       }
       if (polygon.size() < 3) continue;
       step4_triangles(frame, scene, receiver, t, drawn);
+      const ReceiverPlane receiver_plane(frame, scene, view.view, a, face);
       // Beyond the beam's sure inside: one piece per lit region (light_beam.h).
       const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
       for (std::size_t piece = 0; piece < pieces; ++piece) {
         std::vector<ClipVertex> part = polygon;
+        std::vector<glm::vec4> piece_planes = view_planes;  // light view space
         if (beyond_beam) {
+          piece_planes.insert(piece_planes.end(), beam_regions[piece].begin(), beam_regions[piece].end());
           for (const glm::vec4 &plane : beam_regions[piece]) {
             if (part.size() < 3) break;
             clip_polygon(part, plane, scratch);
@@ -394,13 +399,19 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         std::vector<const glm::vec3 *> world;
         for (const ClipVertex &v : part) world.push_back(&v.world);
         measure_footprint(r, glm::normalize(face), world.data(), corners.data(), world.size());
-        std::vector<GrVertex> screen;
-        project_camera_polygon(frame, scene, part, scratch, screen);
-        for (std::size_t i = 0; i < screen.size(); ++i) {
-          set_texture_fields(screen[i], view, light_clip, light, part[i].world, options);
+        // Step 4's triangles clipped to the piece, with their depth (receiver_depth_planes.h).
+        drawn_pieces.clear();
+        cut_drawn(drawn, receiver_plane, piece_planes, drawn_pieces);
+        for (const DrawnPiece &drawn_piece : drawn_pieces) {
+          std::vector<GrVertex> screen(drawn_piece.size());
+          for (std::size_t i = 0; i < screen.size(); ++i) {
+            std::memset(&screen[i], 0, sizeof screen[i]);
+            screen[i].x = drawn_piece[i].screen.x, screen[i].y = drawn_piece[i].screen.y;
+            screen[i].oow = drawn_piece[i].oow;
+            set_texture_fields(screen[i], view, light_clip, light, drawn_piece[i].world, options);
+          }
+          coords.clipped.push_back(std::move(screen));
         }
-        // Its depth from step 4's triangles under it, not from its own vertices.
-        if (screen.size() >= 3) cut_along_drawn(screen, drawn, !options.projective, coords.clipped);
       }
     }
     coords.edge_error.add(receiver_edge_error);

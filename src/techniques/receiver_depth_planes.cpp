@@ -63,51 +63,40 @@ void add_drawn(const GrVertex &a, const GrVertex &b, const GrVertex &c, float wi
   }
 }
 
-// A vertex during the cut: its screen position and the fields that follow it, in double.
+// A vertex during the cut: its screen position and the light view position of the receiver's
+// point seen there (the plane's values are affine in the light view, and their ratio to w is
+// affine in the screen).
 struct CutVertex {
   glm::dvec2 p;
-  double oow, a, sow, tow, q;  // q: tmuvtx[0].oow
+  glm::dvec4 light_view;
+  double oow;  // the point's true 1/w
 };
+
+double cross(const glm::dvec2 &u, const glm::dvec2 &v) { return u.x * v.y - u.y * v.x; }
 
 bool before(const CutVertex &u, const CutVertex &v) {
   return u.p.x < v.p.x || (u.p.x == v.p.x && u.p.y < v.p.y);
 }
 
-double cross(const glm::dvec2 &u, const glm::dvec2 &v) { return u.x * v.y - u.y * v.x; }
-
-// The line through a drawn triangle's edge, its ends in a fixed order whichever triangle it
-// comes from, so that two triangles sharing the edge cut a segment at the very same point.
-struct EdgeLine {
-  glm::dvec2 low, high;
-  double side;  // +1 or -1: the triangle's side of the line
-  double value(const glm::dvec2 &q) const { return side * cross(high - low, q - low); }
-};
-
-EdgeLine edge_line(const glm::vec2 &u, const glm::vec2 &v, const glm::vec2 &opposite) {
-  EdgeLine line;
-  const bool u_first = u.x < v.x || (u.x == v.x && u.y < v.y);
-  line.low = glm::dvec2(u_first ? u : v), line.high = glm::dvec2(u_first ? v : u);
-  line.side = 1.0;
-  line.side = line.value(glm::dvec2(opposite)) < 0.0 ? -1.0 : 1.0;
-  return line;
-}
-
-// Keeps the part of `polygon` on the triangle's side of `line` (on it included). A segment is
-// cut at the point found from its ends in a fixed order, the same from either side.
-void cut(std::vector<CutVertex> &polygon, const EdgeLine &line, std::vector<CutVertex> &scratch) {
+// Keeps the part of `polygon` where dot(plane, light view position) >= 0. A segment is cut at
+// the point found from its ends in a fixed order, so two pieces sharing it agree to the bit.
+void cut(std::vector<CutVertex> &polygon, const glm::dvec4 &plane, std::vector<CutVertex> &scratch) {
   scratch.clear();
   const std::size_t n = polygon.size();
+  auto value = [&](const CutVertex &v) { return glm::dot(plane, v.light_view) * v.oow; };  // affine
   for (std::size_t i = 0; i < n; ++i) {
     const CutVertex &p = polygon[i], &q = polygon[(i + 1) % n];
-    const double dp = line.value(p.p), dq = line.value(q.p);
+    const double dp = value(p), dq = value(q);
     if (dp >= 0.0) scratch.push_back(p);
     if ((dp > 0.0 && dq < 0.0) || (dp < 0.0 && dq > 0.0)) {
       const CutVertex &u = before(p, q) ? p : q, &v = before(p, q) ? q : p;
-      const double du = line.value(u.p), dv = line.value(v.p);
+      const double du = value(u), dv = value(v);
       const double t = du / (du - dv);
-      auto mix = [t](double a, double b) { return a + (b - a) * t; };
-      scratch.push_back({u.p + (v.p - u.p) * t, mix(u.oow, v.oow), mix(u.a, v.a),
-                         mix(u.sow, v.sow), mix(u.tow, v.tow), mix(u.q, v.q)});
+      // Screen-space interpolation: light view position over w is affine there.
+      const double oow = u.oow + (v.oow - u.oow) * t;
+      scratch.push_back({u.p + (v.p - u.p) * t,
+                         (u.light_view * u.oow + (v.light_view * v.oow - u.light_view * u.oow) * t) / oow,
+                         oow});
     }
   }
   polygon.swap(scratch);
@@ -147,46 +136,65 @@ void step4_triangles(const FrameGeometry &frame, const Scene &scene, const Proje
   }
 }
 
-void cut_along_drawn(const std::vector<GrVertex> &polygon, const std::vector<DrawnTriangle> &drawn,
-                     bool q_is_oow, std::vector<std::vector<GrVertex>> &out) {
-  glm::dvec2 low(INFINITY), high(-INFINITY);
-  std::vector<CutVertex> source;
-  for (const GrVertex &v : polygon) {
-    const glm::dvec2 p(v.x, v.y);
-    low = glm::min(low, p), high = glm::max(high, p);
-    source.push_back({p, v.oow, v.a, v.tmuvtx[0].sow, v.tmuvtx[0].tow, v.tmuvtx[0].oow});
-  }
+ReceiverPlane::ReceiverPlane(const FrameGeometry &frame, const Scene &scene,
+                             const glm::mat4 &light_view, const glm::vec3 &point,
+                             const glm::vec3 &normal)
+    : screen_to_world_(glm::inverse(glm::dmat4(frame.view_projection))),
+      world_to_light_view_(light_view),
+      camera_(frame.view_projection),
+      point_(point),
+      normal_(normal),
+      pixels_(scene.width, scene.height) {}
+
+bool ReceiverPlane::at(const glm::dvec2 &screen, glm::dvec4 &light_view, double &oow) const {
+  const glm::dvec2 ndc(screen.x / pixels_.x * 2.0 - 1.0, 1.0 - screen.y / pixels_.y * 2.0);
+  const glm::dvec4 near = screen_to_world_ * glm::dvec4(ndc, -1.0, 1.0);
+  const glm::dvec4 far = screen_to_world_ * glm::dvec4(ndc, 1.0, 1.0);
+  const glm::dvec3 from = glm::dvec3(near) / near.w, to = glm::dvec3(far) / far.w;  // world
+  const double along = glm::dot(normal_, to - from);
+  if (!(std::abs(along) > 0.0)) return false;
+  const glm::dvec3 world = from + (to - from) * (glm::dot(normal_, point_ - from) / along);
+  const double w = (camera_ * glm::dvec4(world, 1.0)).w;
+  if (!(w > 0.0)) return false;
+  light_view = world_to_light_view_ * glm::dvec4(world, 1.0);
+  oow = 1.0 / w;
+  return true;
+}
+
+glm::vec3 ReceiverPlane::world(const glm::dvec4 &light_view) const {
+  return glm::vec3(glm::inverse(world_to_light_view_) * light_view);
+}
+
+void cut_drawn(const std::vector<DrawnTriangle> &drawn, const ReceiverPlane &plane,
+               const std::vector<glm::vec4> &light_view_planes, std::vector<DrawnPiece> &out) {
   std::vector<CutVertex> part, scratch;
   for (const DrawnTriangle &triangle : drawn) {
-    const glm::dvec2 box_low = glm::min(glm::min(glm::dvec2(triangle.p[0]), glm::dvec2(triangle.p[1])),
-                                        glm::dvec2(triangle.p[2]));
-    const glm::dvec2 box_high = glm::max(glm::max(glm::dvec2(triangle.p[0]), glm::dvec2(triangle.p[1])),
-                                         glm::dvec2(triangle.p[2]));
-    if (box_low.x > high.x || box_high.x < low.x || box_low.y > high.y || box_high.y < low.y) continue;
-    part = source;
-    for (int k = 0; k < 3 && part.size() >= 3; ++k) {
-      cut(part, edge_line(triangle.p[k], triangle.p[(k + 1) % 3], triangle.p[(k + 2) % 3]), scratch);
+    part.clear();
+    for (const glm::vec2 &corner : triangle.p) {
+      CutVertex v{glm::dvec2(corner), {}, 0.0};
+      if (!plane.at(v.p, v.light_view, v.oow)) break;
+      part.push_back(v);
     }
-    std::vector<GrVertex> piece;
+    if (part.size() < 3) continue;
+    for (const glm::vec4 &cut_plane : light_view_planes) {
+      cut(part, glm::dvec4(cut_plane), scratch);
+      if (part.size() < 3) break;
+    }
+    DrawnPiece piece;
     for (const CutVertex &v : part) {
-      GrVertex g = polygon.front();  // the fields no pass reads stay those of the piece
-      g.x = snap(static_cast<float>(v.p.x)), g.y = snap(static_cast<float>(v.p.y));
-      if (!piece.empty() && piece.back().x == g.x && piece.back().y == g.y) continue;
-      const double oow = depth_at(triangle, glm::dvec2(g.x, g.y));
-      const double scale = q_is_oow ? oow / v.oow : 1.0;
-      g.oow = static_cast<float>(oow);
-      g.a = static_cast<float>(v.a);
-      g.tmuvtx[0].sow = static_cast<float>(v.sow * scale);
-      g.tmuvtx[0].tow = static_cast<float>(v.tow * scale);
-      g.tmuvtx[0].oow = static_cast<float>(v.q);
-      piece.push_back(g);
+      // Snapped as the shim snaps it; the depth step 4 drew there; the receiver's point there.
+      const glm::vec2 snapped(snap(static_cast<float>(v.p.x)), snap(static_cast<float>(v.p.y)));
+      if (!piece.empty() && piece.back().screen == snapped) continue;
+      glm::dvec4 light_view;
+      double oow;
+      if (!plane.at(glm::dvec2(snapped), light_view, oow)) light_view = v.light_view;
+      piece.push_back({snapped, static_cast<float>(depth_at(triangle, glm::dvec2(snapped))),
+                       plane.world(light_view)});
     }
-    while (piece.size() > 1 && piece.back().x == piece.front().x && piece.back().y == piece.front().y) {
-      piece.pop_back();
-    }
+    while (piece.size() > 1 && piece.back().screen == piece.front().screen) piece.pop_back();
     float area = 0.0f;  // twice the signed area, screen pixels
     for (std::size_t i = 0; i < piece.size(); ++i) {
-      const GrVertex &p = piece[i], &q = piece[(i + 1) % piece.size()];
+      const glm::vec2 &p = piece[i].screen, &q = piece[(i + 1) % piece.size()].screen;
       area += p.x * q.y - q.x * p.y;
     }
     if (piece.size() >= 3 && area != 0.0f) out.push_back(std::move(piece));

@@ -30,14 +30,36 @@ struct DrawnTriangle {
 void step4_triangles(const FrameGeometry &frame, const Scene &scene, const ProjectedObject &object,
                      const glm::uvec3 &triangle, std::vector<DrawnTriangle> &out);
 
-// Cuts a convex screen polygon (a clipped piece of the receiver triangle `drawn` comes from:
-// x, y unsnapped; oow, a and tmuvtx[0] set) along the triangles of `drawn`, and appends to
-// `out` each part that has an area, its vertices snapped as the shim snaps them and their oow on
-// the depth plane of the drawn triangle the part lies in: the part then interpolates the very
-// depth step 4 drew under it. The other fields are interpolated linearly in the screen, as the
-// rasteriser would have across the whole piece; with `q_is_oow` (Listing 3's per-vertex (s, t),
-// which the shim divides by oow) sow and tow are scaled with oow, so (s, t) stays.
-void cut_along_drawn(const std::vector<GrVertex> &polygon, const std::vector<DrawnTriangle> &drawn,
-                     bool q_is_oow, std::vector<std::vector<GrVertex>> &out);
+// The receiver triangle's plane seen through the camera: the point of it at a screen position,
+// in light view space, and its true 1/w (double throughout).
+class ReceiverPlane {
+ public:
+  ReceiverPlane(const FrameGeometry &frame, const Scene &scene, const glm::mat4 &light_view,
+                const glm::vec3 &point, const glm::vec3 &normal);  // world
+  bool at(const glm::dvec2 &screen, glm::dvec4 &light_view, double &oow) const;
+  glm::vec3 world(const glm::dvec4 &light_view) const;
+
+ private:
+  glm::dmat4 screen_to_world_, world_to_light_view_, camera_;
+  glm::dvec3 point_, normal_;
+  glm::dvec2 pixels_;
+};
+
+// A vertex of a clipped receiver piece as step 5 sends it: snapped as the shim snaps it, the
+// depth step 4 drew there, and the receiver's world point there (for (s, t) and alpha).
+struct DrawnVertex {
+  glm::vec2 screen;
+  float oow;
+  glm::vec3 world;
+};
+using DrawnPiece = std::vector<DrawnVertex>;
+
+// Step 4's triangles of a receiver triangle (`drawn`) clipped to the piece the shadow may fall
+// on (`light_view_planes`: dot(plane, light view position) >= 0), in the screen: each part's
+// outline is step 4's own where the triangle's is, so the parts cover the pixels step 4 drew
+// for the piece, and each vertex's oow lies on the depth plane of the triangle it came from,
+// so the part interpolates the very depth step 4 drew under it. Appends the parts with an area.
+void cut_drawn(const std::vector<DrawnTriangle> &drawn, const ReceiverPlane &plane,
+               const std::vector<glm::vec4> &light_view_planes, std::vector<DrawnPiece> &out);
 
 }  // namespace gs
