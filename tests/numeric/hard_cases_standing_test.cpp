@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 
 using namespace hard_cases;  // the checks of hard_case_checks.h
@@ -47,24 +48,29 @@ TEST(HardCases, DepthMapCastersStandingInTheFloor) {
 
 // o7 at the other map sizes; o8 at 64 and 128 texels (at its own 32 it is 0.106%, as with any
 // bias: the map's texels, not the bias; left to the texel footprint's refusal); both with the
-// light raised and lowered 15 degrees.
+// light raised and lowered 15 degrees. Where the wall's texels are too coarse for the screen along
+// its shadow's edges (o7 at 32, and with the light lowered at 64), the estimate of the error along
+// the edges (shadow_edge_error.h) refuses the wall's shadow by name: no bias can help there.
 TEST(HardCases, DepthMapCastersStandingInTheFloorVaried) {
   const std::string o7 = "audit/o7_box_turned_sunk_wall_map64.json";
   const std::string o8 = "audit/o8_box_sunk_map32.json";
+  const std::map<std::string, std::string> right = {};
+  const std::map<std::string, std::string> too_coarse = {
+      {"depth-map", "light 0 and 'wall': the shadow texels would move its edges"}};
   for (const int side : {32, 128}) {
     expect_these_right_or_refused(o7 + " at " + std::to_string(side), with_map(o7, side),
-                                  {"depth-map"}, {}, true);
+                                  {"depth-map"}, side == 32 ? too_coarse : right, true);
   }
   for (const int side : {64, 128}) {
     expect_these_right_or_refused(o8 + " at " + std::to_string(side), with_map(o8, side),
-                                  {"depth-map"}, {}, true);
+                                  {"depth-map"}, right, true);
   }
   for (const float turn : {-15.0f, 15.0f}) {
     const std::string turned = " light turned " + std::to_string(static_cast<int>(turn));
-    expect_these_right_or_refused(o7 + turned, with_light_turned(o7, 64, turn), {"depth-map"}, {},
-                                  true);
-    expect_these_right_or_refused(o8 + turned, with_light_turned(o8, 64, turn), {"depth-map"}, {},
-                                  true);
+    expect_these_right_or_refused(o7 + turned, with_light_turned(o7, 64, turn), {"depth-map"},
+                                  turn < 0.0f ? too_coarse : right, true);
+    expect_these_right_or_refused(o8 + turned, with_light_turned(o8, 64, turn), {"depth-map"},
+                                  right, true);
   }
 }
 
