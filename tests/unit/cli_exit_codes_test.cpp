@@ -44,6 +44,7 @@ TEST(CommandLineExitCodes, UsageErrorsExitTwo) {
         // CLI11's Range lets NaN through; render once ran with glPolygonOffset(NaN) and exited 0.
         "render " + kHardCases + "/box_over_floor.json --bias-slope nan",
         "render " + kHardCases + "/box_over_floor.json --bias-units nan",
+        "render " + kHardCases + "/box_over_floor.json --bias-receiver nan",
         "render " + kHardCases + "/box_over_floor.json --bias-bound nan",
         "render " + kHardCases + "/box_over_floor.json --bias-bound -1",
         std::string("bench --quick --budget nan"),
