@@ -20,6 +20,17 @@ using namespace hard_cases;  // the checks of hard_case_checks.h
 
 namespace {
 
+// One run right (within the interior budget) or refused as too coarse for the screen.
+void expect_right_or_coarse(const std::string &what, const Outcome &o) {
+  expect_clean_glide(what, o);
+  if (!o.refusals.empty()) {
+    EXPECT_NE(o.refusals[0].find("too coarse for the screen"), std::string::npos) << o.refusals[0];
+    return;
+  }
+  EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
+      << what;
+}
+
 // Both projected techniques right (within the interior budget) or refused as too coarse.
 void expect_projected_right_or_coarse(const std::string &what, const gs::Scene &scene) {
   const Truth truth = truth_of(scene);
@@ -27,13 +38,7 @@ void expect_projected_right_or_coarse(const std::string &what, const gs::Scene &
   for (const std::string name : {"projected", "projected-chroma"}) {
     const Outcome o = run(name, scene, truth);
     report(what + " " + name, o);
-    expect_clean_glide(name, o);
-    if (!o.refusals.empty()) {
-      EXPECT_NE(o.refusals[0].find("too coarse for the screen"), std::string::npos) << o.refusals[0];
-      continue;
-    }
-    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-        << what << " " << name;
+    expect_right_or_coarse(what + " " + name, o);
   }
 }
 
@@ -48,13 +53,7 @@ void expect_depth_map_right_or_coarse(const std::string &what, const gs::Scene &
     const std::string name = linear ? "depth-map" : "depth-map nearest";
     const Outcome o = run("depth-map", scene, truth, options);
     report(what + " " + name, o);
-    expect_clean_glide(name, o);
-    if (!o.refusals.empty()) {
-      EXPECT_NE(o.refusals[0].find("too coarse for the screen"), std::string::npos) << o.refusals[0];
-      continue;
-    }
-    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-        << what << " " << name;
+    expect_right_or_coarse(what + " " + name, o);
   }
 }
 
