@@ -238,7 +238,7 @@ bool classes() {
 // Against them, faces seen almost edge-on close to a wide light with a coarse map, which the
 // slope term carried back past the receiver behind them (y6, k1 with the light moved 0.4, 0.3,
 // -0.3 and -0.5, -0.35, 0.2 m), boxes sunk in a floor with their shadows close behind steep lit
-// faces (z7, z8) and the corridor's walls at 512 texels (a2, acne at the walls' feet when the
+// faces (o7, o8) and the corridor's walls at 512 texels (a2, acne at the walls' feet when the
 // push is bounded too tightly). Percentage-closer and nearest filtering, slope factors 1..4,
 // without and with the facet bias (depth_map_facets.h), the push bounded to 1.5 to 8 texels'
 // widths or unbounded, the receiver's own slope taken off at 0 to 1 (depth_map_lookup.h); the
@@ -248,8 +248,8 @@ bool acne() {
   for (const char *name : {"tilted_plate_oblique", "light_facing_camera_posts", "box_resting",
                            "box_over_floor", "dueling_frusta", "audit/i6_post_in_valley_hill_casts",
                            "waves_low_sun", "dunes_side_light", "ripples_grazing",
-                           "audit/y6_light_inside_tube_moved", "audit/z7_box_turned_sunk_wall_map64",
-                           "audit/z8_box_sunk_map32"}) {
+                           "audit/y6_light_inside_tube_moved", "audit/o7_box_turned_sunk_wall_map64",
+                           "audit/o8_box_sunk_map32"}) {
     const std::string file = name;
     columns.push_back({file.substr(file.find_last_of('/') + 1), {name, hard_cases::load(file + ".json")}});
   }
