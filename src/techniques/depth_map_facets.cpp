@@ -35,10 +35,7 @@ std::vector<glm::vec3> facet_pushed_positions(const WorldMesh &mesh, const Light
   if (edges.triangles.empty()) return drawn;
   const std::vector<glm::vec3> &world = mesh.surface_world;  // per welded position
   const std::vector<bool> facing = light_facing(edges, world, light);
-  // A texel's width in metres per metre of light-view depth (the frustum's wider tangent span).
-  const float texel_per_metre =
-      std::max(2.0f / frustum.projection[0][0], 2.0f / frustum.projection[1][1]) /
-      static_cast<float>(std::max(side, 1));
+  const float texel_per_metre = frustum.texel_per_metre(side);
   std::vector<float> push(world.size(), 0.0f);  // metres, along each corner's ray
   for (std::size_t first = 0; first + 1 < edges.edges.size();) {
     std::size_t end = first + 1;

@@ -253,10 +253,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       // the receiver's bias takes (depth_map_lookup.h).
       if (bounded) {
         const glm::vec3 &origin = scene_.lights[light].position;  // world
-        // A texel's width in metres per metre of light-view depth (the wider of its two sides).
-        const float texel_per_metre =
-            std::max(2.0f / frustum.projection[0][0], 2.0f / frustum.projection[1][1]) /
-            static_cast<float>(side);
+        const float texel_per_metre = frustum.texel_per_metre(side);
         slid.clear();
         for (const glm::vec3 &p : mesh.position) {
           const float depth = -(frustum.view * glm::vec4(p, 1.0f)).z;  // light view, metres

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,13 @@ struct LightFrustum {
   glm::mat4 view{1.0f};        // world to light view
   glm::mat4 projection{1.0f};  // light view to light clip
   std::string problem;         // why the light has none, for the user; empty when it has one
+
+  // A texel's width in metres per metre of light-view depth, for a map of `side` texels (the
+  // wider of the frustum's two tangent spans).
+  float texel_per_metre(int side) const {
+    return std::max(2.0f / projection[0][0], 2.0f / projection[1][1]) /
+           static_cast<float>(std::max(side, 1));
+  }
 };
 
 // The GL objects and passes of one frame. Textures and framebuffer are made and deleted with
