@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -403,9 +402,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         drawn_pieces.clear();
         cut_drawn(drawn, receiver_plane, piece_planes, drawn_pieces);
         for (const DrawnPiece &drawn_piece : drawn_pieces) {
-          std::vector<GrVertex> screen(drawn_piece.size());
+          std::vector<GrVertex> screen(drawn_piece.size());  // value-initialised: all fields 0
           for (std::size_t i = 0; i < screen.size(); ++i) {
-            std::memset(&screen[i], 0, sizeof screen[i]);
             screen[i].x = drawn_piece[i].screen.x, screen[i].y = drawn_piece[i].screen.y;
             screen[i].oow = drawn_piece[i].oow;
             set_texture_fields(screen[i], view, light_clip, light, drawn_piece[i].world, options);
