@@ -3,8 +3,11 @@
 
 Each scene has one receiver (a plane, a heightfield, the ring, or a floor with a floating wall),
 one to three casters (boxes, spheres, cylinders open or capped, fighters) at random places,
-turns and flags, one spotlight and one camera. Run them through every technique against the
-ray-cast truth with
+turns and flags, one spotlight and one camera. With --classes, each scene is instead one of
+issue #14's hard classes with random sizes, angles and distances (scene_classes.py): a light
+close behind a wide caster, a long bar across a narrow cone, flags, a tilted plate under an
+oblique light, a light facing the camera, two lights. Run them through every technique against
+the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
     build/bench/hard_case_sweeps files /tmp/audit/*.json
@@ -18,6 +21,8 @@ import math
 import os
 import random
 import sys
+
+import scene_classes
 
 
 def rounded(values, digits=3):
@@ -105,16 +110,21 @@ def main():
     parser.add_argument("--seed", type=int, default=0, help="the first scene's seed; one more each")
     parser.add_argument("--grazing", action="store_true",
                         help="low lights near the casters and low cameras (texels stretch most)")
+    parser.add_argument("--classes", action="store_true",
+                        help="issue #14's hard classes with random parameters (scene_classes.py)")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
     os.makedirs(args.out, exist_ok=True)
-    prefix = "grazing" if args.grazing else "random"
+    if args.classes and args.grazing:
+        parser.error("--classes and --grazing are separate kinds of scene; give one")
+    prefix = "classes" if args.classes else "grazing" if args.grazing else "random"
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
+        made = scene_classes.scene(seed) if args.classes else scene(seed, args.grazing)
         with open(path, "w") as f:
-            json.dump(scene(seed, args.grazing), f, indent=1)
+            json.dump(made, f, indent=1)
             f.write("\n")
     print(f"{args.count} scenes in {args.out}", file=sys.stderr)
 

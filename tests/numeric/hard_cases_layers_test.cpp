@@ -2,8 +2,9 @@
 // caster (tests/hard_cases/README.md, "receiver layers"): a post behind a ridge of its own floor
 // (the floor casting or not), a pole reaching over that ridge (refused by the projected
 // techniques: one texture cannot serve both layers), a stick beside a drum that hides its lower
-// part from the light. Each is checked by expect_right_or_refused (hard_case_checks.h), also
-// with the light turned about its target.
+// part from the light, receivers in front of a caster's inside (a cube over a plate). Each is
+// checked by expect_right_or_refused (hard_case_checks.h), also with the light turned about its
+// target.
 #include "hard_case_checks.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -63,4 +64,16 @@ TEST(HardCases, PoleOverARidgeIsRefusedByTheProjectedTechniques) {
 // Before: 0.18% interior false shadow on the drum's cap (0.79% without the floor).
 TEST(HardCases, StickBesideADrumThatHidesItsFoot) {
   expect_layers_case("stick_beside_drum.json", 25.0f);
+}
+
+// Receivers lying wholly inside a caster's outline as the light sees it, nearer the light: they
+// cross none of the caster's edge samples, so the caster's surface behind each receiver vertex is
+// sampled too (receiver_layers.cpp). Before: the cube over the plate took the plate's shadow
+// (0.376% interior false shadow, reported as success; the third audit's classes_3045, 0.234%).
+// The ball on the slab and the fighter on the stage were right already; they are the same class
+// with the receiver touching the caster.
+TEST(HardCases, ReceiversInFrontOfACastersInside) {
+  expect_layers_case("cube_over_tilted_plate.json", 20.0f);
+  expect_layers_case("ball_on_raised_slab.json", 25.0f);
+  expect_layers_case("fighter_on_stage.json", 25.0f);
 }
