@@ -189,7 +189,13 @@ std::string fragment_shader_source(const PipelineKey &key) {
       s << "  vec3 q = floor((rgb * vec3(2.0, 4.0, 2.0) - floor(rgb / 16.0) +"
            " floor(rgb / vec3(128.0, 64.0, 128.0)) + d) / 16.0);\n";
     }
-    s << "  gl_FragColor = vec4(q / vec3(31.0, 63.0, 31.0), alpha / 255.0);  // exact 565\n";
+    // q / 31 (or 63) to within an ulp gives q back from any float-to-565 conversion (and
+    // from llvmpipe's, which rounds to 8 bits and truncates that, as round(8.23 q) >> 3 = q).
+    // The fast paths multiply by the reciprocal: llvmpipe divides as written, a vdivps per
+    // channel that costs several times a multiply.
+    s << (key.fast ? "  gl_FragColor = vec4(q * vec3(1.0 / 31.0, 1.0 / 63.0, 1.0 / 31.0)"
+                   : "  gl_FragColor = vec4(q / vec3(31.0, 63.0, 31.0)")
+      << ", alpha / 255.0);  // exact 565\n";
   }
   s << "}\n";
   return s.str();
