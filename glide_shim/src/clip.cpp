@@ -86,13 +86,20 @@ void guDrawTriangleWithClip(const GrVertex *a, const GrVertex *b, const GrVertex
     ctx.report(GLIDESHIM_ERR_NULL_POINTER, "guDrawTriangleWithClip: a vertex pointer is NULL");
     return;
   }
-  const glide_shim::VertexFields fields = glide_shim::fields_read(ctx);
+  // grDrawTriangle's cached fields and whole-triangle conversion (the same vertices as
+  // to_shim_vertex's) for a triangle within the setup range; vertex by vertex, up to
+  // kMaxClippedCoordinate and with the reports, otherwise.
+  const glide_shim::VertexFields fields = glide_shim::current_vertex_fields(ctx);
   ShimVertex triangle[3];
-  const GrVertex *in[3] = {a, b, c};
-  for (int i = 0; i < 3; ++i) {
-    if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], triangle[i], "guDrawTriangleWithClip",
-                                    glide_shim::kMaxClippedCoordinate)) {
-      return;
+  if (glide_shim::triangle_is_valid(fields, *a, *b, *c)) {
+    glide_shim::convert_triangle(fields, *a, *b, *c, triangle);
+  } else {
+    const GrVertex *in[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+      if (!glide_shim::to_shim_vertex(ctx, fields, *in[i], triangle[i], "guDrawTriangleWithClip",
+                                      glide_shim::kMaxClippedCoordinate)) {
+        return;
+      }
     }
   }
   // Inside the window (most triangles): what clip_and_draw_fan would queue, without its vector.

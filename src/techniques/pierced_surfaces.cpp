@@ -66,11 +66,13 @@ struct TriangleGrid {
   }
 };
 
-// The triangles of `world` (indexed by `triangles`) whose bounds meet the box, sorted into a grid
-// over it; `index` maps each kept one back to its triangle.
+// The triangles of `world` (indexed by `triangles`) whose bounds meet the box keep_low..keep_high,
+// sorted into a grid over the box low..high (world space); `index` maps each kept one back to its
+// triangle.
 TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
                             const std::vector<glm::uvec3> &triangles, const glm::vec3 &low,
-                            const glm::vec3 &high, std::vector<Triangle> &kept,
+                            const glm::vec3 &high, const glm::vec3 &keep_low,
+                            const glm::vec3 &keep_high, std::vector<Triangle> &kept,
                             std::vector<std::size_t> &index) {
   TriangleGrid grid;
   grid.low = low;
@@ -78,8 +80,8 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const glm::uvec3 &t = triangles[i];
     const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
-    if (glm::any(glm::lessThan(glm::max(a, glm::max(b, c)), low)) ||
-        glm::any(glm::lessThan(high, glm::min(a, glm::min(b, c))))) {
+    if (glm::any(glm::lessThan(glm::max(a, glm::max(b, c)), keep_low)) ||
+        glm::any(glm::lessThan(keep_high, glm::min(a, glm::min(b, c))))) {
       continue;
     }
     const Triangle triangle = triangle_of(a, b, c);
@@ -114,10 +116,22 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
   std::vector<Triangle> surface, caster;
   std::vector<std::size_t> surface_index, caster_index;
   TriangleGrid surface_grid = sort_triangles(receiver.world, receiver.object->mesh.triangles,
-                                             box_low, box_high, surface, surface_index);
+                                             box_low, box_high, box_low, box_high, surface,
+                                             surface_index);
   if (surface.empty()) return false;
-  TriangleGrid caster_grid =
-      sort_triangles(caster_world, caster_triangles, box_low, box_high, caster, caster_index);
+  // A crossing point lies on a triangle of each mesh, so only caster triangles whose bounds come
+  // near the kept surface triangles' can cross or be crossed (a fighter's feet in the mat, not
+  // the whole fighter in the box): those are kept, with a margin well beyond the float rounding
+  // of a crossing point (relative to the coordinates' size); the grid stays over the same box.
+  glm::vec3 surface_low(INFINITY), surface_high(-INFINITY);
+  for (const Triangle &t : surface) {
+    surface_low = glm::min(surface_low, t.low), surface_high = glm::max(surface_high, t.high);
+  }
+  const glm::vec3 size = glm::max(glm::abs(box_low), glm::abs(box_high));
+  const float margin = tolerance + 1e-4f * std::max({size.x, size.y, size.z});
+  TriangleGrid caster_grid = sort_triangles(
+      caster_world, caster_triangles, box_low, box_high, glm::max(box_low, surface_low - margin),
+      glm::min(box_high, surface_high + margin), caster, caster_index);
   pierced.caster_crossing.assign(caster_triangles.size(), 0);
   bool any = false;
   // The caster's edges through the receiver's triangles, and the receiver's through the caster's.
