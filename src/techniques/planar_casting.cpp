@@ -88,6 +88,10 @@ struct PlanarCaster {
   std::size_t object = 0;  // index into scene.objects
   std::vector<CasterTriangle> triangles;
   DirectionBox box = kEmptyBox;
+  // The triangles of its drawn mesh (not shadow_mesh) facing the camera, as the scene pass draws
+  // them (corners counter-clockwise seen from the camera): the surfaces that may hide a
+  // receiver's plane where they pass through it (HiddenRegion).
+  std::vector<CasterTriangle> seen;
 };
 
 // A receiver triangle facing the light, with its plane and edges ready for clipping.
@@ -134,6 +138,13 @@ PlanarCaster prepare_caster(const Scene &scene, std::size_t index, const SpotLig
       caster.triangles.push_back({{a, c, b}, triangle_box(lit, t)});
     }
     caster.box.include(caster.triangles.back().box);
+  }
+  const LitVertices drawn = object.shadow_mesh.triangles.empty()
+                                ? lit
+                                : light_vertices(object.mesh, object.model_to_world, light_view);
+  for (const glm::uvec3 &t : object.mesh.triangles) {
+    const glm::vec3 &a = drawn.world[t.x], &b = drawn.world[t.y], &c = drawn.world[t.z];
+    if (faces(scene.camera.position, a, b, c)) caster.seen.push_back({{a, b, c}, triangle_box(drawn, t)});
   }
   return caster;
 }
@@ -239,6 +250,119 @@ void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
   }
 }
 
+// Where a caster's drawn triangle passes through a receiver triangle's plane, its part on the
+// light's side of the plane hides from the camera a region of the plane that starts at their
+// common line. The caster's shadow on the plane starts at that line too, and there the shadow
+// polygon lies within a depth margin (planar_shadow.cpp's kCoverCodes) behind the caster's
+// visible, often lit, surface: its cover passed that surface along a line of pixels
+// (tests/hard_cases/audit/pl1_*; /work/aud4 seed 5006: two tilted boxes through each other,
+// 0.206% of the receiver pixels). The shadow polygons leave out every such region: what they
+// lose there the camera cannot see. World space: the region lies in the receiver's plane, each
+// edge a plane through the camera, dot(normal, p) >= offset inside, normal of unit length.
+struct HiddenRegion {
+  std::array<glm::vec3, 6> normal;
+  std::array<float, 6> offset{};
+  std::array<float, 6> overlap{};  // metres: a pixel at the edge's far end (see subtract_hidden)
+  std::size_t n = 0;
+};
+
+// The region `seen` (counter-clockwise from the camera) hides on `receiver`'s plane, or false if
+// it does not pass through that plane or hides nothing of the receiver triangle. `camera_height`
+// is the camera's height above the plane (> 0); `pixel` the tangent of a pixel's angle.
+bool hidden_region(const CasterTriangle &seen, const ReceiverTriangle &receiver,
+                   const glm::vec3 &camera, float camera_height, float pixel, SmallPolygon &polygon,
+                   SmallPolygon &scratch, HiddenRegion &region) {
+  float low = INFINITY, high = -INFINITY;
+  for (const glm::vec3 &corner : seen.corner) {
+    const float h = glm::dot(receiver.normal, corner) - receiver.offset;
+    low = std::min(low, h), high = std::max(high, h);
+  }
+  if (!(low < 0.0f && high > 0.0f)) return false;
+  polygon.n = 3;
+  std::copy(seen.corner.begin(), seen.corner.end(), polygon.v.begin());
+  clip_keep(polygon, receiver.normal, receiver.offset, scratch);
+  // Only below the camera: a point level with it or above would hide the plane out to infinity.
+  const float top = camera_height * kNearLightHeight;
+  if (high > top) clip_keep(polygon, -receiver.normal, -(receiver.offset + top), scratch);
+  if (polygon.n < 3 || polygon.n > region.normal.size()) return false;
+  for (std::size_t i = 0; i < polygon.n; ++i) {
+    const float d = glm::dot(receiver.normal, polygon.v[i]) - receiver.offset;
+    polygon.v[i] = camera + (polygon.v[i] - camera) * (camera_height / (camera_height - d));
+  }
+  region.n = 0;
+  for (std::size_t i = 0; i < polygon.n; ++i) {
+    const glm::vec3 &from = polygon.v[i], &to = polygon.v[(i + 1) % polygon.n];
+    const glm::vec3 inward = glm::cross(receiver.normal, to - from);
+    const float length = glm::length(inward);
+    if (!(length > 1e-9f)) continue;
+    region.normal[region.n] = inward / length;
+    region.offset[region.n] = glm::dot(region.normal[region.n], from);
+    region.overlap[region.n] =
+        pixel * std::max(glm::distance(camera, from), glm::distance(camera, to));
+    ++region.n;
+  }
+  if (region.n < 3) return false;
+  // Nothing of the receiver triangle inside: no need to cut its polygons.
+  for (std::size_t e = 0; e < region.n; ++e) {
+    bool outside = true;
+    for (const glm::vec3 &corner : receiver.corner) {
+      outside = outside && glm::dot(region.normal[e], corner) <= region.offset[e];
+    }
+    if (outside) return false;
+  }
+  return true;
+}
+
+// `pieces` less `region`: each piece that overlaps it is replaced by its parts outside the
+// region's edges in turn, part e also inside edges 0 to e-1 so that the parts do not pile up
+// over later regions. Those inner edges are moved out by `overlap` (a pixel), so neighbouring
+// parts overlap instead of leaving cracks where their vertices round differently; the covers'
+// depth levels darken an overlapped pixel once all the same. A part that would need more corners
+// than a SmallPolygon holds is left whole (the margin of before, never less shadow).
+void subtract_hidden(std::vector<SmallPolygon> &pieces, const HiddenRegion &region,
+                     std::vector<SmallPolygon> &kept, SmallPolygon &scratch) {
+  kept.clear();
+  for (const SmallPolygon &piece : pieces) {
+    bool apart = false;
+    for (std::size_t e = 0; e < region.n && !apart; ++e) {
+      apart = true;
+      for (std::size_t i = 0; i < piece.n && apart; ++i) {
+        apart = glm::dot(region.normal[e], piece.v[i]) <= region.offset[e];
+      }
+    }
+    if (apart || piece.n + region.n > piece.v.size()) {
+      kept.push_back(piece);
+      continue;
+    }
+    for (std::size_t e = 0; e < region.n; ++e) {
+      SmallPolygon part = piece;
+      clip_keep(part, -region.normal[e], -region.offset[e], scratch);
+      for (std::size_t f = 0; f < e && part.n >= 3; ++f) {
+        clip_keep(part, region.normal[f], region.offset[f] - region.overlap[f], scratch);
+      }
+      if (part.n >= 3) kept.push_back(part);
+    }
+  }
+  std::swap(pieces, kept);
+}
+
+// Every region `caster`'s drawn surface hides of receiver triangle `r`'s plane where it passes
+// through it (none when the camera is behind the plane: the covers there are culled).
+void hidden_regions(const PlanarCaster &caster, const ReceiverTriangle &r,
+                    const glm::vec3 &camera, float pixel, std::vector<HiddenRegion> &hidden,
+                    SmallPolygon &polygon, SmallPolygon &scratch) {
+  hidden.clear();
+  const float camera_height = glm::dot(r.normal, camera) - r.offset;
+  if (!(camera_height > 0.0f)) return;
+  HiddenRegion region;
+  for (const CasterTriangle &seen : caster.seen) {
+    if (!seen.box.overlaps(r.box)) continue;
+    if (hidden_region(seen, r, camera, camera_height, pixel, polygon, scratch, region)) {
+      hidden.push_back(region);
+    }
+  }
+}
+
 glm::mat4 light_view_matrix(const SpotLight &light) {
   glm::vec3 axis = light.target - light.position;
   axis = glm::length(axis) > 1e-6f ? glm::normalize(axis) : glm::vec3(0.0f, -1.0f, 0.0f);
@@ -251,7 +375,12 @@ glm::mat4 light_view_matrix(const SpotLight &light) {
 PlanarShadows project_and_clip_casters(const Scene &scene) {
   PlanarShadows result;
   result.lights.resize(scene.lights.size());
-  SmallPolygon polygon, scratch;
+  SmallPolygon polygon, polygon_b, scratch;
+  std::vector<SmallPolygon> parts, kept;
+  std::vector<HiddenRegion> hidden;
+  // The tangent of a pixel's angle through the camera (vertical field of view; square pixels).
+  const float pixel = 2.0f * std::tan(glm::radians(scene.camera.fov_degrees) * 0.5f) /
+                      static_cast<float>(std::max(scene.height, 1));
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const SpotLight &light = scene.lights[l];
     if (light.is_projector()) continue;  // slides cast no shadows
@@ -272,6 +401,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
         for (const ReceiverTriangle &r : receiver.triangles) {
           if (!r.box.overlaps(caster.box)) continue;
           const float top = r.light_height * kNearLightHeight;
+          bool hidden_known = false;  // `hidden` is found for this pair at its first polygon
           for (const CasterTriangle &c : caster.triangles) {
             if (!c.box.overlaps(r.box)) continue;
             // Heights above the receiver's plane: nothing wholly beyond the plane (the receiver
@@ -291,11 +421,22 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
             for (std::size_t piece = 0; piece < pieces; ++piece) {
               cast_on(c, r, light.position, height, beam.regions[piece], polygon, scratch);
               if (polygon.n < 3) continue;
-              out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
-                                      static_cast<std::uint32_t>(polygon.n),
-                                      static_cast<std::uint32_t>(receiver.object), r.index});
-              out.vertices.insert(out.vertices.end(), polygon.v.begin(),
-                                  polygon.v.begin() + static_cast<std::ptrdiff_t>(polygon.n));
+              if (!hidden_known) {
+                hidden_regions(caster, r, scene.camera.position, pixel, hidden, polygon_b,
+                               scratch);
+                hidden_known = true;
+              }
+              parts.assign(1, polygon);
+              for (const HiddenRegion &region : hidden) {
+                subtract_hidden(parts, region, kept, scratch);
+              }
+              for (const SmallPolygon &part : parts) {
+                out.polygons.push_back({static_cast<std::uint32_t>(out.vertices.size()),
+                                        static_cast<std::uint32_t>(part.n),
+                                        static_cast<std::uint32_t>(receiver.object), r.index});
+                out.vertices.insert(out.vertices.end(), part.v.begin(),
+                                    part.v.begin() + static_cast<std::ptrdiff_t>(part.n));
+              }
             }
           }
         }

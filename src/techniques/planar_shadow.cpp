@@ -56,7 +56,9 @@ namespace {
 // edge-on it would let covers pass what lies close in front of it (with it on every receiver,
 // the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
 // An occluder closer to the receiver than 0.03% (0.14%) of its distance, plus that 1/16 px of its
-// gradient near the screen's edges, may let a cover show through.
+// gradient near the screen's edges, may let a cover show through, unless it is a caster passing
+// through the receiver's plane: step 1 leaves out what that caster hides of the plane from the
+// camera (planar_casting.cpp, HiddenRegion).
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
