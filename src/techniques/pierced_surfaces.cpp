@@ -5,12 +5,15 @@
 #include "techniques/pierced_receivers.h"
 
 #include "techniques/projection.h"
+#include "techniques/scene_pass.h"
 
 #include <glide.h>
 #include <glideutl.h>
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -100,6 +103,116 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   return grid;
 }
 
+// The receiver's outline from the light: the edges (world) of its light-facing triangles that
+// no other light-facing triangle shares (by position), sorted, so that a lookup is a search; and
+// those triangles' corners in the light's screen (texels), to find what lies beyond an edge.
+struct Outline {
+  using Edge = std::pair<glm::vec3, glm::vec3>;
+  struct Lit {
+    glm::vec3 corner[3];  // world
+    glm::vec2 screen[3];  // light screen, texels
+    bool in_front;        // every corner before the light (else it is taken to overlap all)
+  };
+  std::vector<Edge> edges;
+  std::vector<Lit> lit;
+  static bool less(const glm::vec3 &p, const glm::vec3 &q) {
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  }
+  static Edge key(const glm::vec3 &p, const glm::vec3 &q) {
+    return less(p, q) ? Edge(p, q) : Edge(q, p);
+  }
+  static bool edge_less(const Edge &a, const Edge &b) {
+    return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
+  }
+  bool contains(const glm::vec3 &p, const glm::vec3 &q) const {
+    return std::binary_search(edges.begin(), edges.end(), key(p, q), edge_less);
+  }
+  // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
+  // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
+  bool nothing_beyond(const glm::vec3 &p, const glm::vec3 &q, const glm::vec2 (&fin)[4]) const {
+    auto separated = [](const glm::vec2 *a, int na, const glm::vec2 *b, int nb) {
+      for (int i = 0; i < na; ++i) {
+        const glm::vec2 side = a[(i + 1) % na] - a[i];
+        const glm::vec2 axis(side.y, -side.x);
+        float a_low = INFINITY, a_high = -INFINITY, b_low = INFINITY, b_high = -INFINITY;
+        for (int k = 0; k < na; ++k) a_low = std::min(a_low, glm::dot(axis, a[k])), a_high = std::max(a_high, glm::dot(axis, a[k]));
+        for (int k = 0; k < nb; ++k) b_low = std::min(b_low, glm::dot(axis, b[k])), b_high = std::max(b_high, glm::dot(axis, b[k]));
+        if (a_high <= b_low || b_high <= a_low) return true;
+      }
+      return false;
+    };
+    for (const Lit &t : lit) {
+      bool neighbour = false;
+      for (const glm::vec3 &corner : t.corner) neighbour = neighbour || corner == p || corner == q;
+      if (neighbour) continue;
+      if (!t.in_front) return false;
+      if (!separated(fin, 4, t.screen, 3) && !separated(t.screen, 3, fin, 4)) return false;
+    }
+    return true;
+  }
+};
+
+Outline outline_of(const LightView &view, const ProjectedObject &receiver,
+                   const std::vector<glm::vec4> &clip) {
+  std::vector<Outline::Edge> all;
+  Outline outline;
+  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+    if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;
+    all.push_back(Outline::key(a, b));
+    all.push_back(Outline::key(b, c));
+    all.push_back(Outline::key(c, a));
+    Outline::Lit lit{{a, b, c}, {}, true};
+    int k = 0;
+    for (unsigned i : {t.x, t.y, t.z}) {
+      lit.in_front = lit.in_front && clip[i].w > 0.0f;
+      const GrVertex v = to_screen(clip[i], view.size, view.size);
+      lit.screen[k++] = glm::vec2(v.x, v.y);
+    }
+    outline.lit.push_back(lit);
+  }
+  std::sort(all.begin(), all.end(), Outline::edge_less);
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i + 1;
+    while (j < all.size() && !Outline::edge_less(all[i], all[j])) ++j;
+    if (j == i + 1) outline.edges.push_back(all[i]);
+    i = j;
+  }
+  return outline;
+}
+
+// A strip kFinTexels wide (the light's screen, texels) outside the edge p..q of a triangle whose
+// third corner is r, and as far beyond both ends, at the edge's own depth (1/W of its ends): a
+// texel centre that bilinear filtering reads for a point of the receiver (less than a texel away
+// on each axis, so within sqrt 2, plus the shim's 1/16 snapping) lies in the triangle or in the
+// strip. Wound as p, q, r are, so the caster's cull mode keeps it.
+constexpr float kFinTexels = 1.5f;
+void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Outline &outline,
+              const glm::vec3 &p_world, const glm::vec3 &q_world) {
+  const glm::vec2 a(p.x, p.y), b(q.x, q.y), third(r.x, r.y);
+  const float length = glm::length(b - a);
+  if (!(length > 0.0f)) return;
+  const glm::vec2 along = (b - a) / length;
+  glm::vec2 out(along.y, -along.x);
+  if (glm::dot(out, third - a) > 0.0f) out = -out;
+  const glm::vec2 corners[4] = {a - along * kFinTexels, b + along * kFinTexels,
+                                b + (along + out) * kFinTexels, a + (out - along) * kFinTexels};
+  // Another layer of the receiver beyond the edge (a rope over the mat) takes the caster between
+  // them as its shadow: no fin there (the texture holds one answer per texel).
+  if (!outline.nothing_beyond(p_world, q_world, corners)) return;
+  std::vector<GrVertex> quad(4, p);
+  for (int k = 0; k < 4; ++k) {
+    quad[static_cast<std::size_t>(k)].x = corners[k].x;
+    quad[static_cast<std::size_t>(k)].y = corners[k].y;
+    quad[static_cast<std::size_t>(k)].oow = k == 1 || k == 2 ? q.oow : p.oow;
+  }
+  const auto cross2 = [](const glm::vec2 &u, const glm::vec2 &v) { return u.x * v.y - u.y * v.x; };
+  // Reversed when it turns the other way from p, q, r (r lies inward, the quad outward), so the
+  // caster's cull mode keeps it.
+  if ((cross2(b - a, third - a) > 0.0f) != (cross2(b - a, out) > 0.0f)) std::reverse(quad.begin(), quad.end());
+  draw_fan(quad);
+}
+
 }  // namespace
 
 bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec3> &caster_world,
@@ -187,6 +300,7 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
   }
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
+  const Outline outline = outline_of(view, receiver, clip);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     if ((outside[t.x] & outside[t.y] & outside[t.z]) != 0) continue;
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
@@ -213,9 +327,23 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
     }
     // Only where the caster draws does step 1 test depth, and a pixel both cover has its centre
     // within 1/16 texel (the shim's snapping) of both boxes: a surface triangle farther than a
-    // texel from every covered cell writes no depth the caster is tested against.
-    if (!view.covered_near(low, high, 1.0f)) continue;
-    draw_fan(fan);
+    // texel from every covered cell writes no depth the caster is tested against (nor its fins
+    // farther than that and their width).
+    if (!view.covered_near(low, high, 1.0f + kFinTexels)) continue;
+    if (view.covered_near(low, high, 1.0f)) draw_fan(fan);
+    // Along the receiver's outline from the light, the texture beyond it holds the caster behind
+    // the receiver, which the receiver's own points next to the outline would read (the filter's
+    // reach): its fins keep the caster there out of the texture, as the receiver's surface does
+    // inside it (a box hovering over a ring's mat, issue 14). Only for a triangle wholly inside
+    // the view (the fan is then its three corners, in order).
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) continue;
+    const glm::vec3 *corner[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+      if (outline.contains(*corner[k], *corner[(k + 1) % 3])) {
+        draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
+                 fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3]);
+      }
+    }
   }
   grColorMask(FXTRUE, FXFALSE);
   grDepthMask(FXFALSE);

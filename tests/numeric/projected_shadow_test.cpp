@@ -126,7 +126,10 @@ TEST_F(ProjectedShadowTest, TextureKeepsACleanBorderInEveryDemoFrame) {
           border += set && (x < 2 || y < 2 || x >= 126 || y >= 126);
         }
       }
-      EXPECT_GT(drawn, 500) << "time " << time << ": caster missing from its texture";
+      // A fighter's texture for the other fighter it reaches into holds only what lies nearer
+      // the light than that fighter's surface and its outline's fins (pierced_surfaces.cpp):
+      // 499 texels at t = 4 (636 before the fins), the whole fighter about 1,900.
+      EXPECT_GT(drawn, 400) << "time " << time << ": caster missing from its texture";
       EXPECT_EQ(border, 0) << "time " << time << ": caster touches the texture's border";
     }
   }
