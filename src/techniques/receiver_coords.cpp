@@ -5,6 +5,7 @@
 // in Glide texture units (0..256 across the shadow texture) as sow, tow over their divisor.
 #include "techniques/projected_shadow.h"
 
+#include "techniques/caster_surface_from_light.h"
 #include "techniques/light_beam.h"
 #include "techniques/receiver_depth_planes.h"
 
@@ -282,6 +283,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     segment_boxes.emplace_back(low, high);
   }
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
+  const CasterSurfaceFromLight caster_surface(scene.objects[caster], light_clip);
   std::vector<std::size_t> candidates;
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   std::vector<DrawnPiece> drawn_pieces;
@@ -349,6 +351,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         if (!sees_caster(view, corners, 3)) continue;
       }
+      // Wholly nearer the light than the caster's surface behind it: never in its shadow.
+      const glm::vec4 light_corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
+      if (!caster_surface.may_shadow(light_corners, 3)) continue;
       const bool exact = !needs_clip &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
       if (exact) {

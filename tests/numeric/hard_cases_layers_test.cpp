@@ -72,8 +72,17 @@ TEST(HardCases, StickBesideADrumThatHidesItsFoot) {
 // (0.376% interior false shadow, reported as success; the third audit's classes_3045, 0.234%).
 // The ball on the slab and the fighter on the stage were right already; they are the same class
 // with the receiver touching the caster.
+// Receivers standing on the caster with faces nearly edge-on to the light: the masked texture cut
+// them out of the caster's shadow only to the texel, which spans many pixels on such a face; step
+// 3 now leaves unshaded every receiver triangle wholly nearer the light than the caster's surface
+// behind it (caster_surface_from_light.h). Before, reported as success: posts_on_table turned -20
+// degrees 0.240% (chroma 0.248%), pillars_on_plinth turned 10 degrees 0.175% (0.178%),
+// book_on_crate turned -15 degrees 0.110% (0.117%) interior false shadow.
 TEST(HardCases, ReceiversInFrontOfACastersInside) {
   expect_layers_case("cube_over_tilted_plate.json", 20.0f);
   expect_layers_case("ball_on_raised_slab.json", 25.0f);
   expect_layers_case("fighter_on_stage.json", 25.0f);
+  expect_layers_case("posts_on_table.json", 20.0f);
+  expect_layers_case("pillars_on_plinth.json", 10.0f);
+  expect_layers_case("book_on_crate.json", 15.0f);
 }

@@ -150,7 +150,9 @@ TEST_F(ProjectedShadowTest, LfbAndDirectPathsGiveIdenticalTextures) {
         textures[direct].emplace_back(bytes, bytes + 64 * 64 * 2);
       }
     }
-    ASSERT_GE(textures[0].size(), 2u);  // a fighter's, and one per receiver it reaches through
+    // A fighter's, and one per receiver it reaches through; none for a receiver wholly nearer
+    // the light than the fighter (the other fighter at 2.1 s: caster_surface_from_light.h).
+    ASSERT_GE(textures[0].size(), time == 2.1f ? 1u : 2u);
     EXPECT_TRUE(textures[0] == textures[1]) << "time " << time;
   }
   EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();

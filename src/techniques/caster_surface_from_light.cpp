@@ -1,0 +1,138 @@
+// The caster's surface as the light sees it (caster_surface_from_light.h). Light clip space:
+// the caster's triangles in NDC with 1/w at their corners, sorted into a grid of their NDC box;
+// a receiver polygon is clipped to each face whose box meets its own, and the two depths are
+// compared at the corners of what is left.
+#include "techniques/caster_surface_from_light.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gs {
+namespace {
+
+// A receiver point is shadowed by a caster surface nearer the light than its own depth times
+// (1 - kTouch): a foot standing on the caster (equal depths, up to float rounding of both
+// planes' 1/w, a few 1e-7 of the depth) is not.
+constexpr float kTouch = 1e-4f;
+
+struct PolygonCorner {
+  glm::vec2 ndc;
+  float inverse_w;  // the receiver polygon's 1 / w there
+};
+
+// Sutherland-Hodgman: keeps the part of `polygon` where `edge` (a, b, NDC) has the face's
+// inside on its left when `sign` is 1, on its right when -1.
+void clip_to_edge(std::vector<PolygonCorner> &polygon, const glm::vec2 &a, const glm::vec2 &b,
+                  float sign, std::vector<PolygonCorner> &scratch) {
+  scratch.clear();
+  const glm::vec2 along = b - a;
+  auto side = [&](const glm::vec2 &p) {
+    const glm::vec2 d = p - a;
+    return sign * (along.x * d.y - along.y * d.x);
+  };
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const PolygonCorner &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    const float sp = side(p.ndc), sq = side(q.ndc);
+    if (sp >= 0.0f) scratch.push_back(p);
+    if ((sp >= 0.0f) != (sq >= 0.0f)) {
+      const float t = sp / (sp - sq);
+      scratch.push_back({p.ndc + (q.ndc - p.ndc) * t, p.inverse_w + (q.inverse_w - p.inverse_w) * t});
+    }
+  }
+  polygon.swap(scratch);
+}
+
+}  // namespace
+
+CasterSurfaceFromLight::CasterSurfaceFromLight(const SceneObject &caster, const glm::mat4 &light_clip) {
+  const Mesh &mesh = caster_mesh(caster);
+  std::vector<glm::vec4> clip(mesh.positions.size());
+  for (std::size_t i = 0; i < clip.size(); ++i) {
+    clip[i] = light_clip * (caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    if (!(clip[i].w > 0.0f)) usable_ = false;
+  }
+  if (!usable_) return;
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec4 &a = clip[t.x], &b = clip[t.y], &c = clip[t.z];
+    Face face;
+    face.a = glm::vec2(a) / a.w;
+    face.to_b = glm::vec2(b) / b.w - face.a, face.to_c = glm::vec2(c) / c.w - face.a;
+    face.area = face.to_b.x * face.to_c.y - face.to_b.y * face.to_c.x;
+    // Edge-on to the light: it covers no area of the light's view (nor any texel centre).
+    if (!(std::abs(face.area) >= 1e-12f)) continue;
+    face.inverse_w = {1.0f / a.w, 1.0f / b.w, 1.0f / c.w};
+    face.low = glm::min(face.a, face.a + glm::min(face.to_b, face.to_c));
+    face.high = glm::max(face.a, face.a + glm::max(face.to_b, face.to_c));
+    low_ = glm::min(low_, face.low), high_ = glm::max(high_, face.high);
+    faces_.push_back(face);
+  }
+  start_.assign(kGrid * kGrid + 1, 0);
+  auto each_cell = [&](const Face &face, auto &&visit) {
+    for (int y = cell_of(face.low.y, 1); y <= cell_of(face.high.y, 1); ++y) {
+      for (int x = cell_of(face.low.x, 0); x <= cell_of(face.high.x, 0); ++x) {
+        visit(static_cast<std::size_t>(y * kGrid + x));
+      }
+    }
+  };
+  for (const Face &face : faces_) each_cell(face, [&](std::size_t cell) { ++start_[cell + 1]; });
+  for (std::size_t cell = 0; cell + 1 < start_.size(); ++cell) start_[cell + 1] += start_[cell];
+  items_.resize(start_.back());
+  std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    each_cell(faces_[f], [&](std::size_t cell) { items_[next[cell]++] = f; });
+  }
+  stamp_.assign(faces_.size(), 0);
+}
+
+int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
+  const float side = std::max(high_[axis] - low_[axis], 1e-12f) / kGrid;
+  const float cell = std::floor((ndc - low_[axis]) / side);
+  return static_cast<int>(std::clamp(cell, 0.0f, static_cast<float>(kGrid - 1)));
+}
+
+bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t count) const {
+  if (!usable_) return true;
+  std::vector<PolygonCorner> polygon;
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!(light_clip[i].w > 0.0f)) return true;
+    polygon.push_back({glm::vec2(light_clip[i]) / light_clip[i].w, 1.0f / light_clip[i].w});
+    low = glm::min(low, polygon.back().ndc), high = glm::max(high, polygon.back().ndc);
+  }
+  if (faces_.empty() || glm::any(glm::lessThan(high, low_)) || glm::any(glm::lessThan(high_, low))) {
+    return false;
+  }
+  ++query_;
+  std::vector<PolygonCorner> part, scratch;
+  for (int y = cell_of(low.y, 1); y <= cell_of(high.y, 1); ++y) {
+    for (int x = cell_of(low.x, 0); x <= cell_of(high.x, 0); ++x) {
+      const auto cell = static_cast<std::size_t>(y * kGrid + x);
+      for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+        const std::size_t f = items_[k];
+        if (stamp_[f] == query_) continue;
+        stamp_[f] = query_;
+        const Face &face = faces_[f];
+        if (glm::any(glm::lessThan(high, face.low)) || glm::any(glm::lessThan(face.high, low))) continue;
+        // The polygon's part over the face (convex), then both depths at its corners.
+        part = polygon;
+        const float sign = face.area > 0.0f ? 1.0f : -1.0f;
+        const glm::vec2 b = face.a + face.to_b, c = face.a + face.to_c;
+        clip_to_edge(part, face.a, b, sign, scratch);
+        clip_to_edge(part, b, c, sign, scratch);
+        clip_to_edge(part, c, face.a, sign, scratch);
+        for (const PolygonCorner &corner : part) {
+          const glm::vec2 d = corner.ndc - face.a;
+          const float u = (d.x * face.to_c.y - d.y * face.to_c.x) / face.area;
+          const float v = (face.to_b.x * d.y - face.to_b.y * d.x) / face.area;
+          const float face_inverse_w =
+              glm::dot(glm::vec3(1.0f - u - v, u, v), face.inverse_w);
+          // The face nearer than the polygon: w_face < w_polygon (1 - kTouch).
+          if (face_inverse_w * (1.0f - kTouch) > corner.inverse_w) return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace gs
