@@ -17,8 +17,9 @@ namespace gs::depth_map {
 // `corners`: three world positions per triangle. `to_map`: world to light texture coordinates.
 // `side`: the map's side in texels. `factor`: the share of the triangle's depth change over one
 // texel along each map axis (|dr/dx| + |dr/dy|, r/q per texel) taken off r/q, never more than
-// the triangle's own span of r/q; 0: none. A triangle with a corner at or behind the light's
-// plane (q <= 0) gets none (the q gate decides there).
+// the triangle's own span of r/q over its part inside the map; 0: none. A triangle reaching
+// behind the light's plane (q <= 0 at a corner) gets it too, from its homogeneous corners (where
+// q <= 0 the q gate decides).
 std::vector<glm::vec4> biased_map_coords(const std::vector<glm::vec3> &corners,
                                          const glm::mat4 &to_map, int side, float factor);
 
