@@ -351,11 +351,13 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
         if (!sees_caster(view, corners, 3)) continue;
       }
-      // Wholly nearer the light than the caster's surface behind it: never in its shadow.
+      // Wholly nearer the light than the caster's surface behind it: never in its shadow. An
+      // exact triangle stays in the list, as Listing 2 flags it, but step 5 does not draw it.
       const glm::vec4 light_corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-      if (!caster_surface.may_shadow(light_corners, 3)) continue;
+      const bool may_shadow = caster_surface.may_shadow(light_corners, 3);
       const bool exact = !needs_clip &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
+      if (!may_shadow && !exact) continue;
       if (exact) {
         ShadowTriangle triangle;
         const unsigned index[3] = {t.x, t.y, t.z};
@@ -365,7 +367,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                              options);
         }
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        triangle.reaches_caster = reaches_covered_cell(view, corners, 3);
+        triangle.reaches_caster = may_shadow && reaches_covered_cell(view, corners, 3);
         if (triangle.reaches_caster) {
           const glm::vec3 *const world[3] = {&a, &b, &c};
           measure_footprint(r, glm::normalize(face), world, corners, 3);
