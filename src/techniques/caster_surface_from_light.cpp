@@ -15,10 +15,7 @@ namespace {
 // planes' 1/w, a few 1e-7 of the depth) is not.
 constexpr float kTouch = 1e-4f;
 
-struct PolygonCorner {
-  glm::vec2 ndc;
-  float inverse_w;  // the receiver polygon's 1 / w there
-};
+using PolygonCorner = CasterSurfaceFromLight::PolygonCorner;
 
 // Sutherland-Hodgman: keeps the part of `polygon` where `edge` (a, b, NDC) has the face's
 // inside on its left when `sign` is 1, on its right when -1.
@@ -92,7 +89,8 @@ int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
 
 bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t count) const {
   if (!usable_) return true;
-  std::vector<PolygonCorner> polygon;
+  std::vector<PolygonCorner> &polygon = polygon_;
+  polygon.clear();
   glm::vec2 low(INFINITY), high(-INFINITY);
   for (std::size_t i = 0; i < count; ++i) {
     if (!(light_clip[i].w > 0.0f)) return true;
@@ -103,7 +101,7 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
     return false;
   }
   ++query_;
-  std::vector<PolygonCorner> part, scratch;
+  std::vector<PolygonCorner> &part = part_, &scratch = scratch_;
   for (int y = cell_of(low.y, 1); y <= cell_of(high.y, 1); ++y) {
     for (int x = cell_of(low.x, 0); x <= cell_of(high.x, 0); ++x) {
       const auto cell = static_cast<std::size_t>(y * kGrid + x);

@@ -31,6 +31,12 @@ class CasterSurfaceFromLight {
   // behind the light's plane, or the caster reaching there).
   bool may_shadow(const glm::vec4 *light_clip, std::size_t count) const;
 
+ // A corner of a receiver polygon as may_shadow clips it (light NDC).
+  struct PolygonCorner {
+    glm::vec2 ndc;
+    float inverse_w;  // the receiver polygon's 1 / w there
+  };
+
  private:
   struct Face {
     glm::vec2 a, to_b, to_c;  // NDC: a corner and the edges from it
@@ -47,6 +53,8 @@ class CasterSurfaceFromLight {
   std::vector<std::size_t> start_, items_;     // per cell its faces: items_[start_[c]..start_[c+1])
   mutable std::vector<std::size_t> stamp_;     // per face, the query that last tested it
   mutable std::size_t query_ = 0;
+  // may_shadow's polygons, kept so that a query (one per receiver triangle) allocates nothing.
+  mutable std::vector<PolygonCorner> polygon_, part_, scratch_;
 };
 
 }  // namespace gs
