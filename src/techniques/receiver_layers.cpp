@@ -1,6 +1,6 @@
 // Receivers that hide part of a caster from the light, and those that hold a caster part between
 // two of their layers (receiver_layers.h). Light clip space: the caster's edges sampled every few
-// texels, and its surface behind each receiver vertex, each receiver's triangles sorted into a grid of the light's screen (NDC), and per
+// texels, each receiver's triangles sorted into a grid of the light's screen (NDC), and per
 // sample the receiver surfaces on the light's ray through it, with their depth (w, metres along
 // the light's axis) and whether they face the light.
 #include "techniques/receiver_layers.h"
@@ -146,25 +146,6 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     }
   }
   if (samples.empty()) return layers;
-  // The caster's triangles in the light's view, to find its surface behind a receiver vertex: a
-  // receiver lying wholly inside the caster's outline as the light sees it (a cube over a plate)
-  // crosses no edge sample, yet hides the caster's surface behind it.
-  std::vector<LayerTriangle> caster_faces;
-  for (const glm::uvec3 &t : mesh.triangles) {
-    const glm::vec4 &a = clip[t.x], &b = clip[t.y], &c = clip[t.z];
-    if (a.w <= 0.0f || b.w <= 0.0f || c.w <= 0.0f) continue;
-    LayerTriangle lt;
-    lt.a = glm::vec2(a) / a.w, lt.to_b = glm::vec2(b) / b.w - lt.a, lt.to_c = glm::vec2(c) / c.w - lt.a;
-    lt.area = lt.to_b.x * lt.to_c.y - lt.to_b.y * lt.to_c.x;
-    if (std::abs(lt.area) < 1e-12f) continue;
-    lt.low = glm::min(lt.a, lt.a + glm::min(lt.to_b, lt.to_c));
-    lt.high = glm::max(lt.a, lt.a + glm::max(lt.to_b, lt.to_c));
-    lt.inverse_w = {1.0f / a.w, 1.0f / b.w, 1.0f / c.w};
-    caster_faces.push_back(lt);
-  }
-  LayerGrid caster_grid;
-  bucket_layer_triangles(caster_faces, sample_low, sample_high, caster_grid);
-  std::vector<EdgeSample> behind_vertices;  // of the receiver in hand
   // Step 3's cover of the texture (LightView::nearest, filled in step 1): per cell of 16 a side,
   // the nearest depth of every caster triangle whose bounding box touches it. A receiver
   // triangle wholly nearer the light than that in every cell it touches is never shaded with
@@ -256,24 +237,6 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     // with none nearer than the farthest sample, and a sample with none in its cell nearer
     // than itself, are skipped (neither can give `hides` or `between`).
     if (!(nearest_hiding * kInterpolatedWMargin < farthest_sample - tolerance)) continue;
-    // The caster's surface behind each receiver vertex that is nearer the light than the
-    // caster's farthest sample, as more samples for this receiver.
-    behind_vertices.clear();
-    for (const LayerVertex &v : receiver_view) {
-      if (!(v.w > 0.0f && v.w < farthest_sample) ||
-          glm::any(glm::lessThan(v.ndc, sample_low)) || glm::any(glm::lessThan(sample_high, v.ndc))) {
-        continue;
-      }
-      const std::size_t cell =
-          static_cast<std::size_t>(layer_cell_of(v.ndc.y) * kLayerGrid + layer_cell_of(v.ndc.x));
-      for (std::size_t k = caster_grid.start[cell]; k < caster_grid.start[cell + 1]; ++k) {
-        const LayerTriangle &face = caster_faces[caster_grid.items[k]];
-        glm::vec3 l;
-        if (!layer_weights(face, v.ndc, l)) continue;
-        const float w = 1.0f / glm::dot(l, face.inverse_w);
-        if (w > v.w + tolerance && w > view.caster_front) behind_vertices.push_back({v.ndc, w});
-      }
-    }
     bucket_layer_triangles(triangles, sample_low, sample_high, grid);
     cell_hiding.assign(grid.start.size() - 1, INFINITY);
     for (std::size_t cell = 0; cell + 1 < grid.start.size(); ++cell) {
@@ -284,10 +247,10 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     }
     bool hides = false, between = false;
     unresolved.clear();
-    auto classify = [&](const EdgeSample &s, bool may_be_between) {
+    for (const EdgeSample &s : samples) {
       const std::size_t cell =
           static_cast<std::size_t>(layer_cell_of(s.ndc.y) * kLayerGrid + layer_cell_of(s.ndc.x));
-      if (!(cell_hiding[cell] * kInterpolatedWMargin < s.w - tolerance)) return;
+      if (!(cell_hiding[cell] * kInterpolatedWMargin < s.w - tolerance)) continue;
       float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
       bool front_faces_light = false, hidden = false, lit_behind = false;
       const auto [first, last] = cell_at(s.ndc);
@@ -311,14 +274,9 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       const bool outside = hidden && !front_faces_light;
       const bool buried = hidden && front_faces_light && known == pierced.end();
       hides = hides || outside || buried;
-      between = between || (may_be_between && (outside || buried) && lit_behind);
-      if (may_be_between && !between && (outside || buried)) unresolved.push_back(&s);
-    };
-    for (const EdgeSample &s : samples) {
-      if (!between) classify(s, true);
-    }
-    for (const EdgeSample &s : behind_vertices) {
-      if (!between) classify(s, false);
+      between = between || ((outside || buried) && lit_behind);
+      if (between) break;
+      if (outside || buried) unresolved.push_back(&s);
     }
     if (!between && !unresolved.empty() && !behind.empty()) {
       bucket_layer_triangles(behind, sample_low, sample_high, grid);

@@ -67,9 +67,9 @@ TEST(HardCases, StickBesideADrumThatHidesItsFoot) {
 }
 
 // Receivers lying wholly inside a caster's outline as the light sees it, nearer the light: they
-// cross none of the caster's edge samples, so the caster's surface behind each receiver vertex is
-// sampled too (receiver_layers.cpp). Before: the cube over the plate took the plate's shadow
-// (0.376% interior false shadow, reported as success; the third audit's classes_3045, 0.234%).
+// cross none of the caster's edge samples, so receiver_layers does not mask them; step 3 leaves
+// them unshaded (below). Before: the cube over the plate took the plate's shadow (0.376%
+// interior false shadow, reported as success; the third audit's classes_3045, 0.234%).
 // The ball on the slab and the fighter on the stage were right already; they are the same class
 // with the receiver touching the caster.
 // Receivers standing on the caster with faces nearly edge-on to the light: the masked texture cut
