@@ -6,7 +6,9 @@ one to three casters (boxes, spheres, cylinders open or capped, fighters) at ran
 turns and flags, one spotlight and one camera. With --classes, each scene is instead one of
 issue #14's hard classes with random sizes, angles and distances (scene_classes.py): a light
 close behind a wide caster, a long bar across a narrow cone, flags, a tilted plate under an
-oblique light, a light facing the camera, two lights. Run them through every technique against
+oblique light, a light facing the camera, two lights. With --meshes, each scene holds OBJ meshes
+unlike the built-in shapes (tori, concave prisms, open bowls, crumpled sheets, some unwelded
+with zero-area triangles; scene_meshes.py), written beside the scenes. Run them through every technique against
 the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
@@ -23,6 +25,7 @@ import random
 import sys
 
 import scene_classes
+import scene_meshes
 
 
 def rounded(values, digits=3):
@@ -112,17 +115,25 @@ def main():
                         help="low lights near the casters and low cameras (texels stretch most)")
     parser.add_argument("--classes", action="store_true",
                         help="issue #14's hard classes with random parameters (scene_classes.py)")
+    parser.add_argument("--meshes", action="store_true",
+                        help="OBJ meshes unlike the built-in shapes (scene_meshes.py)")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
     os.makedirs(args.out, exist_ok=True)
-    if args.classes and args.grazing:
-        parser.error("--classes and --grazing are separate kinds of scene; give one")
-    prefix = "classes" if args.classes else "grazing" if args.grazing else "random"
+    if args.classes + args.grazing + args.meshes > 1:
+        parser.error("--classes, --grazing and --meshes are separate kinds of scene; give one")
+    prefix = ("classes" if args.classes else "grazing" if args.grazing else
+              "meshes" if args.meshes else "random")
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
-        made = scene_classes.scene(seed) if args.classes else scene(seed, args.grazing)
+        if args.classes:
+            made = scene_classes.scene(seed)
+        elif args.meshes:
+            made = scene_meshes.scene(seed, args.out, random.Random(seed))
+        else:
+            made = scene(seed, args.grazing)
         with open(path, "w") as f:
             json.dump(made, f, indent=1)
             f.write("\n")
