@@ -133,16 +133,16 @@ def crumple(r):
 
 
 def unweld(vertices, faces, r):
-    """Each triangle with its own vertices, and a few zero-area triangles among them."""
+    """Each triangle with its own vertices, and a few zero-area triangles among them: an edge
+    collapsed to a point (two corners at one position), as a decimating exporter leaves it."""
     loose, loose_faces = [], []
     for face in faces:
         loose_faces.append(tuple(len(loose) + k for k in range(3)))
         loose += [vertices[i] for i in face]
     for _ in range(r.randint(1, 4)):
         a, b = r.choice(faces)[:2]
-        middle = tuple((p + q) / 2 for p, q in zip(vertices[a], vertices[b]))
         loose_faces.append((len(loose), len(loose) + 1, len(loose) + 2))
-        loose += [vertices[a], middle, vertices[b]]
+        loose += [vertices[a], vertices[b], vertices[b]]
     return loose, loose_faces
 
 
@@ -178,7 +178,7 @@ def scene(seed, out_dir, r):
     ground_objects, height = scene_classes.ground(r)
     objects = ground_objects + [mesh_object(r, seed, k, out_dir, height) for k in range(r.randint(1, 3))]
     centre = [0, height, 0]
-    lights = [scene_classes.light(scene_classes.polar(r, centre, (10, 80), (1.5, 8)),
+    lights = [scene_classes.light(scene_classes.polar(r, centre, r.choice([(3, 12), (10, 80), (10, 80)]), (1.2, 8)),
                                   r3([r.uniform(-1, 1), height, r.uniform(-1, 1)]),
                                   r.uniform(30, 140), r.choice([128, 256, 256, 512]))
               for _ in range(r.choice([1, 1, 1, 2]))]
