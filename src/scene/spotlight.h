@@ -41,6 +41,13 @@ glm::vec3 sample_projected_image(const ProjectedImage &image, const glm::vec2 &u
 float distance_attenuation(const SpotLight &light, float axial_distance);
 float axial_distance(const SpotLight &light, const glm::vec3 &world);  // light view depth, metres
 
+// The texture sizes both renderings of the light passes use (the Glide passes and the plain-GL
+// units of depth maps and stencil volumes), so that they light alike: beam maps are
+// kBeamMapSide texels a side (the patterns' edges within a texel), attenuation ramps
+// kAttenuationMapWidth texels over [near, farthest].
+constexpr int kBeamMapSide = 128;
+constexpr int kAttenuationMapWidth = 256;
+
 // The beam map as a texture: side x side intensities 0..255, row 0 at the top of the beam, each
 // texel the exact intensity at its centre, and the outer ring of texels black so that clamp mode
 // adds no light outside the cone.

@@ -112,6 +112,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   gl_.glDepthFunc(GL_LESS);
   gl_.glDepthMask(GL_TRUE);
   gl_.glDisable(GL_CULL_FACE);  // a caster shadows from whichever side the light sees it
+  // The near plane keeps the map's range at 1000:1 or less, and a caster may pass nearer the
+  // light than that (a light inside a box, a millimetre from one face): clipped there, the face
+  // would have a hole the light leaks through. Clamped instead, its part nearer than the near
+  // plane lands at depth 0 and shadows everything behind it; nothing lies between it and the
+  // light. Where no caster crosses the near plane (0.99 of the nearest corner's depth in every
+  // other frustum) nothing is clamped, so those maps are unchanged.
+  gl_.glEnable(GL_DEPTH_CLAMP);
   // Pushed away from the light by the slope (light-view depth per texel) and a few depth units,
   // so a lit surface compares nearer than its own sample (Everitt et al., "Why is polygon
   // offset needed?").
@@ -268,6 +275,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     }
   }
   gl_.glDisable(GL_POLYGON_OFFSET_FILL);
+  gl_.glDisable(GL_DEPTH_CLAMP);
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_framebuffer_));
 }
 

@@ -14,9 +14,6 @@
 namespace gs {
 namespace {
 
-constexpr int kBeamSide = 128;            // texels, as the Glide passes use
-constexpr int kAttenuationWidth = 256;    // texels over [near plane, farthest]
-
 // A texture of `width` x `height` texels of `channels` bytes (1: luminance, 3: RGB), row 0 first.
 // Every row used here is a multiple of 4 bytes, GL's default unpack alignment.
 GLuint make_texture(const GlApi &gl, int width, int height, int channels, const std::uint8_t *texels) {
@@ -42,7 +39,7 @@ GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthe
   // Made on unit 2, so whatever the caller has bound on units 0 and 1 stays bound.
   gl.glActiveTexture(GL_TEXTURE2);
   // The projected texture's rows go up the beam: GL's t = 0 is the first row uploaded.
-  int side = kBeamSide, channels = 1;
+  int side = kBeamMapSide, channels = 1;
   std::vector<std::uint8_t> top_first;
   if (light.is_projector()) {
     const ProjectedImage slide = slide_image(light);
@@ -50,7 +47,7 @@ GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthe
     for (const glm::vec3 &c : slide.rgb)
       for (int k = 0; k < 3; ++k) top_first.push_back(static_cast<std::uint8_t>(std::lround(c[k] * 255.0f)));
   } else {
-    top_first = beam_texels(light, kBeamSide);
+    top_first = beam_texels(light, kBeamMapSide);
   }
   const std::size_t row_bytes = static_cast<std::size_t>(side * channels);
   std::vector<std::uint8_t> bottom_first(top_first.size());
@@ -64,9 +61,9 @@ GlLightUnits::GlLightUnits(const GlApi &gl, const SpotLight &light, float farthe
   if (light.attenuation.mode != AttenuationMode::PerPixel)
     function.attenuation.mode = AttenuationMode::None;
   std::vector<std::uint8_t> ramp =
-      attenuation_texels(function, nearest_, farthest_, kAttenuationWidth - 1);
+      attenuation_texels(function, nearest_, farthest_, kAttenuationMapWidth - 1);
   ramp.insert(ramp.begin(), 0);
-  attenuation_ = make_texture(gl, kAttenuationWidth, 1, 1, ramp.data());
+  attenuation_ = make_texture(gl, kAttenuationMapWidth, 1, 1, ramp.data());
   gl.glActiveTexture(GL_TEXTURE0);
 }
 
@@ -84,7 +81,7 @@ void GlLightUnits::bind() {
                             glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f)) * light_clip;
   // s: the depth's place in the texture: texel 0 centred before the near plane, the ramp's
   // texel i at near + (i + 0.5) / 255 of the range, i.e. s = (1 + (d - near) / range * 255) / 256.
-  const float width = static_cast<float>(kAttenuationWidth);
+  const float width = static_cast<float>(kAttenuationMapWidth);
   const float per_metre = (width - 1.0f) / (farthest_ - nearest_) / width;
   glm::mat4 to_attenuation(0.0f);
   for (int column = 0; column < 4; ++column) to_attenuation[column][0] = -view[column][2] * per_metre;

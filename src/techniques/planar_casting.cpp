@@ -6,10 +6,12 @@
 
 #include "scene/lighting.h"
 #include "techniques/light_beam.h"
+#include "techniques/planar_pieces.h"
 #include "techniques/point_in_mesh.h"
 #include "techniques/stencil_volume_shadow.h"
 #include "techniques/projection.h"
 #include "techniques/scene_pass.h"
+#include "techniques/triangle_distance.h"
 
 #include <glide.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,29 +24,33 @@
 #include <tuple>
 
 namespace gs {
+
+void planar::clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset,
+                       SmallPolygon &scratch) {
+  scratch.n = 0;
+  for (std::size_t i = 0; i < polygon.n; ++i) {
+    const glm::vec3 &a = polygon.v[i], &b = polygon.v[(i + 1) % polygon.n];
+    const float da = glm::dot(normal, a) - offset, db = glm::dot(normal, b) - offset;
+    if (da >= 0.0f) scratch.v[scratch.n++] = a;
+    if ((da >= 0.0f) != (db >= 0.0f)) {
+      // From the same end whichever way the edge is walked: neighbours sharing it meet exactly.
+      const bool forward = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+      scratch.v[scratch.n++] = forward ? a + (b - a) * (da / (da - db))
+                                       : b + (a - b) * (db / (db - da));
+    }
+  }
+  std::swap(polygon, scratch);
+}
+
 namespace {
 
-// A caster point this close to the light's height above a receiver plane (as a fraction of that
-// height) would project over a thousand times farther than it is from the light: such parts are
-// cut off, since no receiver triangle reaches that far and float precision would not either.
-constexpr float kNearLightHeight = 0.999f;
+using planar::clip_keep, planar::hidden_regions, planar::subtract_hidden;
+using planar::CasterTriangle, planar::DirectionBox, planar::HiddenRegion, planar::kEmptyBox,
+    planar::kNearLightHeight, planar::PlanarCaster, planar::ReceiverTriangle, planar::SmallPolygon;
 
-// Light directions of a triangle: the rectangle around its corners' (x/-z, y/-z) in light view.
-// A triangle reaching behind the light's view plane has no such rectangle and gets all of
-// direction space.
-struct DirectionBox {
-  glm::vec2 low{-INFINITY}, high{INFINITY};
-  bool overlaps(const DirectionBox &other) const {
-    return low.x <= other.high.x && other.low.x <= high.x && low.y <= other.high.y &&
-           other.low.y <= high.y;
-  }
-  void include(const DirectionBox &other) {
-    low = glm::min(low, other.low);
-    high = glm::max(high, other.high);
-  }
-};
-
-constexpr DirectionBox kEmptyBox{glm::vec2(INFINITY), glm::vec2(-INFINITY)};
+// The thinnest cut, for a caster passing closer to the light than a millionth of the receiver's
+// reach: nearer still, the projection's rounding would move the shadow by more than it holds.
+constexpr float kNearestLightShare = 1e-6f;
 
 // An object's vertices in world space and as seen from one light.
 struct LitVertices {
@@ -79,33 +85,6 @@ bool faces(const glm::vec3 &light, const glm::vec3 &a, const glm::vec3 &b, const
   return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0f;
 }
 
-struct CasterTriangle {
-  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
-  DirectionBox box;
-};
-
-struct PlanarCaster {
-  std::size_t object = 0;  // index into scene.objects
-  std::vector<CasterTriangle> triangles;
-  DirectionBox box = kEmptyBox;
-  // The triangles of its drawn mesh (not shadow_mesh) facing the camera, as the scene pass draws
-  // them (corners counter-clockwise seen from the camera): the surfaces that may hide a
-  // receiver's plane where they pass through it (HiddenRegion).
-  std::vector<CasterTriangle> seen;
-};
-
-// A receiver triangle facing the light, with its plane and edges ready for clipping.
-struct ReceiverTriangle {
-  std::uint32_t index = 0;          // into the object's mesh.triangles
-  std::array<glm::vec3, 3> corner;  // world, counter-clockwise seen from the light
-  glm::vec3 normal{0.0f};           // world, unit, on the light's side
-  float offset = 0.0f;              // dot(normal, p) of the plane's points
-  float light_height = 0.0f;        // the light's distance above the plane, metres (> 0)
-  std::array<glm::vec3, 3> inward;  // world, in the plane: into the triangle from edge i, i+1
-  std::array<float, 3> inward_offset{};
-  DirectionBox box;
-  bool beyond_beam = false;         // not wholly inside the light's inner beam: clip to it
-};
 
 struct Receiver {
   std::size_t object = 0;
@@ -132,10 +111,11 @@ PlanarCaster prepare_caster(const Scene &scene, std::size_t index, const SpotLig
     if (!facing && (closed || !faces(light.position, a, c, b))) continue;
     // Wholly behind the light's view plane: its shadow goes away from every receiver in the cone.
     if (!lit.in_front[t.x] && !lit.in_front[t.y] && !lit.in_front[t.z]) continue;
+    const float distance = distance_to_triangle(light.position, a, b, c);
     if (facing) {
-      caster.triangles.push_back({{a, b, c}, triangle_box(lit, t)});
+      caster.triangles.push_back({{a, b, c}, triangle_box(lit, t), distance});
     } else {
-      caster.triangles.push_back({{a, c, b}, triangle_box(lit, t)});
+      caster.triangles.push_back({{a, c, b}, triangle_box(lit, t), distance});
     }
     caster.box.include(caster.triangles.back().box);
   }
@@ -181,6 +161,9 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
     r.offset = glm::dot(r.normal, r.corner[0]);
     r.light_height = glm::dot(r.normal, light.position) - r.offset;
     if (r.light_height <= 0.0f) continue;  // facing away from the light
+    for (const glm::vec3 &corner : r.corner) {
+      r.light_reach = std::max(r.light_reach, glm::distance(corner, light.position));
+    }
     for (int e = 0; e < 3; ++e) {
       const glm::vec3 &from = r.corner[static_cast<std::size_t>(e)];
       const glm::vec3 &to = r.corner[static_cast<std::size_t>((e + 1) % 3)];
@@ -194,28 +177,16 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
   return receiver;
 }
 
-// A convex polygon during clipping: a triangle cut by five planes has at most eight corners, and
-// the beam region's planes (at most kConeSides and a gobo's two bars) add one each.
-struct SmallPolygon {
-  std::array<glm::vec3, 10 + kConeSides> v;
-  std::size_t n = 0;
-};
 
-// Sutherland-Hodgman against one plane: keeps the part where dot(normal, p) >= offset.
-void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, SmallPolygon &scratch) {
-  scratch.n = 0;
-  for (std::size_t i = 0; i < polygon.n; ++i) {
-    const glm::vec3 &a = polygon.v[i], &b = polygon.v[(i + 1) % polygon.n];
-    const float da = glm::dot(normal, a) - offset, db = glm::dot(normal, b) - offset;
-    if (da >= 0.0f) scratch.v[scratch.n++] = a;
-    if ((da >= 0.0f) != (db >= 0.0f)) {
-      // From the same end whichever way the edge is walked: neighbours sharing it meet exactly.
-      const bool forward = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-      scratch.v[scratch.n++] = forward ? a + (b - a) * (da / (da - db))
-                                       : b + (a - b) * (db / (db - da));
-    }
-  }
-  std::swap(polygon, scratch);
+
+// The height above `receiver`'s plane up to which `caster` is cast on it. A point at height d
+// projects to distance * h / (h - d) from the light, its distance at least the triangle's
+// `light_distance` s: above h (1 - s / reach) it lands beyond the receiver's farthest corner,
+// where the edges would cut it anyway. The cut is that, or kNearLightHeight where that is lower
+// (a caster a millimetre from the light, as a light inside a box, keeps all it shadows).
+float top_of_casting(const CasterTriangle &caster, const ReceiverTriangle &receiver) {
+  const float share = std::max(caster.light_distance / receiver.light_reach, kNearestLightShare);
+  return receiver.light_height * std::max(kNearLightHeight, 1.0f - share);
 }
 
 // Listing 1's lines 05-09 for one pair, in world space: the caster triangle clipped to the part
@@ -224,7 +195,7 @@ void clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float offset, Sma
 void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
              const glm::vec3 &light, const std::array<float, 3> &height,
              const std::vector<glm::vec4> &beam, SmallPolygon &polygon, SmallPolygon &scratch) {
-  const float top = receiver.light_height * kNearLightHeight;
+  const float top = top_of_casting(caster, receiver);
   polygon.n = 3;
   std::copy(caster.corner.begin(), caster.corner.end(), polygon.v.begin());
   if (std::min({height[0], height[1], height[2]}) < 0.0f) {
@@ -250,118 +221,6 @@ void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
   }
 }
 
-// Where a caster's drawn triangle passes through a receiver triangle's plane, its part on the
-// light's side of the plane hides from the camera a region of the plane that starts at their
-// common line. The caster's shadow on the plane starts at that line too, and there the shadow
-// polygon lies within a depth margin (planar_shadow.cpp's kCoverCodes) behind the caster's
-// visible, often lit, surface: its cover passed that surface along a line of pixels
-// (tests/hard_cases/audit/pl1_*; /work/aud4 seed 5006: two tilted boxes through each other,
-// 0.206% of the receiver pixels). The shadow polygons leave out every such region: what they
-// lose there the camera cannot see. World space: the region lies in the receiver's plane, each
-// edge a plane through the camera, dot(normal, p) >= offset inside, normal of unit length.
-struct HiddenRegion {
-  std::array<glm::vec3, 6> normal;
-  std::array<float, 6> offset{};
-  std::array<float, 6> overlap{};  // metres: a pixel at the edge's far end (see subtract_hidden)
-  std::size_t n = 0;
-};
-
-// The region `seen` (counter-clockwise from the camera) hides on `receiver`'s plane, or false if
-// it does not pass through that plane or hides nothing of the receiver triangle. `camera_height`
-// is the camera's height above the plane (> 0); `pixel` the tangent of a pixel's angle.
-bool hidden_region(const CasterTriangle &seen, const ReceiverTriangle &receiver,
-                   const glm::vec3 &camera, float camera_height, float pixel, SmallPolygon &polygon,
-                   SmallPolygon &scratch, HiddenRegion &region) {
-  float low = INFINITY, high = -INFINITY;
-  for (const glm::vec3 &corner : seen.corner) {
-    const float h = glm::dot(receiver.normal, corner) - receiver.offset;
-    low = std::min(low, h), high = std::max(high, h);
-  }
-  if (!(low < 0.0f && high > 0.0f)) return false;
-  polygon.n = 3;
-  std::copy(seen.corner.begin(), seen.corner.end(), polygon.v.begin());
-  clip_keep(polygon, receiver.normal, receiver.offset, scratch);
-  // Only below the camera: a point level with it or above would hide the plane out to infinity.
-  const float top = camera_height * kNearLightHeight;
-  if (high > top) clip_keep(polygon, -receiver.normal, -(receiver.offset + top), scratch);
-  if (polygon.n < 3 || polygon.n > region.normal.size()) return false;
-  for (std::size_t i = 0; i < polygon.n; ++i) {
-    const float d = glm::dot(receiver.normal, polygon.v[i]) - receiver.offset;
-    polygon.v[i] = camera + (polygon.v[i] - camera) * (camera_height / (camera_height - d));
-  }
-  region.n = 0;
-  for (std::size_t i = 0; i < polygon.n; ++i) {
-    const glm::vec3 &from = polygon.v[i], &to = polygon.v[(i + 1) % polygon.n];
-    const glm::vec3 inward = glm::cross(receiver.normal, to - from);
-    const float length = glm::length(inward);
-    if (!(length > 1e-9f)) continue;
-    region.normal[region.n] = inward / length;
-    region.offset[region.n] = glm::dot(region.normal[region.n], from);
-    region.overlap[region.n] =
-        pixel * std::max(glm::distance(camera, from), glm::distance(camera, to));
-    ++region.n;
-  }
-  if (region.n < 3) return false;
-  // Nothing of the receiver triangle inside: no need to cut its polygons.
-  for (std::size_t e = 0; e < region.n; ++e) {
-    bool outside = true;
-    for (const glm::vec3 &corner : receiver.corner) {
-      outside = outside && glm::dot(region.normal[e], corner) <= region.offset[e];
-    }
-    if (outside) return false;
-  }
-  return true;
-}
-
-// `pieces` less `region`: each piece that overlaps it is replaced by its parts outside the
-// region's edges in turn, part e also inside edges 0 to e-1 so that the parts do not pile up
-// over later regions. Those inner edges are moved out by `overlap` (a pixel), so neighbouring
-// parts overlap instead of leaving cracks where their vertices round differently; the covers'
-// depth levels darken an overlapped pixel once all the same. A part that would need more corners
-// than a SmallPolygon holds is left whole (the margin of before, never less shadow).
-void subtract_hidden(std::vector<SmallPolygon> &pieces, const HiddenRegion &region,
-                     std::vector<SmallPolygon> &kept, SmallPolygon &scratch) {
-  kept.clear();
-  for (const SmallPolygon &piece : pieces) {
-    bool apart = false;
-    for (std::size_t e = 0; e < region.n && !apart; ++e) {
-      apart = true;
-      for (std::size_t i = 0; i < piece.n && apart; ++i) {
-        apart = glm::dot(region.normal[e], piece.v[i]) <= region.offset[e];
-      }
-    }
-    if (apart || piece.n + region.n > piece.v.size()) {
-      kept.push_back(piece);
-      continue;
-    }
-    for (std::size_t e = 0; e < region.n; ++e) {
-      SmallPolygon part = piece;
-      clip_keep(part, -region.normal[e], -region.offset[e], scratch);
-      for (std::size_t f = 0; f < e && part.n >= 3; ++f) {
-        clip_keep(part, region.normal[f], region.offset[f] - region.overlap[f], scratch);
-      }
-      if (part.n >= 3) kept.push_back(part);
-    }
-  }
-  std::swap(pieces, kept);
-}
-
-// Every region `caster`'s drawn surface hides of receiver triangle `r`'s plane where it passes
-// through it (none when the camera is behind the plane: the covers there are culled).
-void hidden_regions(const PlanarCaster &caster, const ReceiverTriangle &r,
-                    const glm::vec3 &camera, float pixel, std::vector<HiddenRegion> &hidden,
-                    SmallPolygon &polygon, SmallPolygon &scratch) {
-  hidden.clear();
-  const float camera_height = glm::dot(r.normal, camera) - r.offset;
-  if (!(camera_height > 0.0f)) return;
-  HiddenRegion region;
-  for (const CasterTriangle &seen : caster.seen) {
-    if (!seen.box.overlaps(r.box)) continue;
-    if (hidden_region(seen, r, camera, camera_height, pixel, polygon, scratch, region)) {
-      hidden.push_back(region);
-    }
-  }
-}
 
 glm::mat4 light_view_matrix(const SpotLight &light) {
   glm::vec3 axis = light.target - light.position;
@@ -400,10 +259,10 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
         if (caster.object == receiver.object || !caster.box.overlaps(receiver.box)) continue;
         for (const ReceiverTriangle &r : receiver.triangles) {
           if (!r.box.overlaps(caster.box)) continue;
-          const float top = r.light_height * kNearLightHeight;
           bool hidden_known = false;  // `hidden` is found for this pair at its first polygon
           for (const CasterTriangle &c : caster.triangles) {
             if (!c.box.overlaps(r.box)) continue;
+            const float top = top_of_casting(c, r);
             // Heights above the receiver's plane: nothing wholly beyond the plane (the receiver
             // is then between it and the light) or wholly level with the light casts on it.
             const std::array<float, 3> height = {glm::dot(r.normal, c.corner[0]) - r.offset,

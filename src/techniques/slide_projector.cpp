@@ -15,8 +15,7 @@
 namespace gs {
 namespace {
 
-constexpr int kBeamSide = 128;       // beam maps, texels: the patterns' edges within a texel
-constexpr int kAttenuationWidth = 256, kAttenuationRows = 32;  // aspect 8x1, the widest
+constexpr int kAttenuationRows = 32;  // the ramp's rows: aspect 8x1, the widest
 // TMU memory above the shadow textures' usual range; each pass downloads its own texture.
 constexpr FxU32 kProjectedTextureAddress = 0x180000;
 
@@ -133,7 +132,7 @@ void use_texture(FxU32 address, GrLOD_t lod, GrAspectRatio_t aspect, GrTextureFo
 }
 
 void use_beam_texture(const SpotLight &light) {
-  std::vector<std::uint8_t> texels = beam_texels(light, kBeamSide);
+  std::vector<std::uint8_t> texels = beam_texels(light, kBeamMapSide);
   use_texture(kProjectedTextureAddress, GR_LOD_128, GR_ASPECT_1x1, GR_TEXFMT_INTENSITY_8,
               texels.data());
 }
@@ -163,17 +162,17 @@ void form_exact_spotlight(const Scene &scene, const FrameGeometry &frame, const 
   // Plain variables, not a structured binding: C++17 lambdas cannot capture bindings (clang).
   const std::pair<float, float> range = depth_range(frame, light);
   const float nearest = range.first, farthest = range.second;
-  std::vector<std::uint8_t> ramp = attenuation_texels(light, nearest, farthest, kAttenuationWidth);
+  std::vector<std::uint8_t> ramp = attenuation_texels(light, nearest, farthest, kAttenuationMapWidth);
   std::vector<std::uint8_t> texels(ramp.size() * kAttenuationRows);
   for (int row = 0; row < kAttenuationRows; ++row)
-    std::copy(ramp.begin(), ramp.end(), texels.begin() + row * kAttenuationWidth);
+    std::copy(ramp.begin(), ramp.end(), texels.begin() + row * kAttenuationMapWidth);
   use_texture(kProjectedTextureAddress, GR_LOD_256, GR_ASPECT_8x1, GR_TEXFMT_INTENSITY_8,
               texels.data());
   grHints(GR_HINT_STWHINT, 0);
   grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_LOCAL,
                  GR_COMBINE_LOCAL_ITERATED, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
-  const float texels_per_metre = static_cast<float>(kAttenuationWidth) / (farthest - nearest);
+  const float texels_per_metre = static_cast<float>(kAttenuationMapWidth) / (farthest - nearest);
   draw_projected_pass(scene, frame, light, [&](GrVertex &v, const glm::vec3 &world,
                                                const glm::vec3 &normal) {
     set_iterated_color(v, vertex_light_term(light, world, normal, true));
