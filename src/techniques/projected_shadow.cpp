@@ -12,13 +12,11 @@
 #include "techniques/slide_projector.h"
 
 #include <glide_shim.h>
-#include <glideutl.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cmath>
-#include <functional>
 #include <optional>
 #include <string>
 #include <utility>

@@ -3,7 +3,6 @@
 // down) of the camera; texture addresses are byte addresses in TMU0 memory.
 #include "techniques/projected_shadow.h"
 
-#include <glide_shim.h>
 #include <glideutl.h>
 
 #include <optional>
