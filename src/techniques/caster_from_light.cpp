@@ -340,8 +340,9 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
 
 // Step 1's drawing: the flat render of `draw` (cover_caster_from_light's, for the same view and
 // mask) into the back buffer's corner (the rest of the back buffer cleared) or texture memory.
-void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
-                            const SurfaceMask *mask, const CasterDraw &draw) {
+// The LFB path leaves the clip window on the corner; draw_caster_from_light puts it back.
+void draw_caster_flat(LightView &view, FxU32 texture_address, const SurfaceMask *mask,
+                      const CasterDraw &draw) {
   // The flat render: 565 red 11110b on 0, no depth test (but a SurfaceMask's), back faces culled
   // (closed casters).
   if (view.direct_path && !glideShimRenderToTexture(GR_TMU0, texture_address, shadow_lod(view.size))) {
@@ -373,6 +374,11 @@ void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_a
   }
   if (mask) grDepthBufferMode(GR_DEPTHBUFFER_DISABLE);
   if (view.direct_path) glideShimRenderToFrameBuffer();
+}
+
+void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
+                            const SurfaceMask *mask, const CasterDraw &draw) {
+  draw_caster_flat(view, texture_address, mask, draw);
   grClipWindow(0, 0, static_cast<FxU32>(scene.width), static_cast<FxU32>(scene.height));
 }
 

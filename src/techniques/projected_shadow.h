@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
+#include "techniques/shadow_texture_memory.h"
 #include "techniques/shadow_edge_error.h"
 #include "techniques/texel_footprint.h"
 
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,8 +109,13 @@ struct LightView {
 };
 
 struct ShadowTexture {
-  FxU32 address = 0;  // in TMU memory
+  FxU32 address = 0;  // in TMU memory (for render_projected_shadows' textures, where it was
+                      // placed: ShadowFrame::textures says whether it is there)
   GrTexInfo info{};
+  std::size_t id = 0;  // the frame's name for it in ShadowFrame::textures
+  // The LFB path: step 2's read-back (system memory, size x size words, rows from the top),
+  // which loads it into TMU memory again.
+  std::vector<FxU16> texels;
 };
 
 // A receiver triangle the texture is projected onto, ready for step 5 (screen vertices with
@@ -136,15 +144,6 @@ struct ReceiverCoords {
 struct StepTimes {
   double ms[5] = {};  // steps 1..5
   double total_ms = 0.0;
-};
-
-// One shadow: a caster under a light.
-struct ShadowJob {
-  std::size_t caster = 0;  // index into scene.objects
-  std::size_t light = 0;   // index into scene.lights
-  LightView view;
-  ShadowTexture texture;
-  ReceiverCoords receivers;
 };
 
 // Step 1, in three parts. The light's view fitted to the caster (LightView), keeping a clean
@@ -195,10 +194,37 @@ void mask_caster_cover(const Scene &scene, std::size_t caster, LightView &view,
                        const SurfaceMask &mask, CasterDraw &draw);
 void draw_caster_from_light(const Scene &scene, LightView &view, FxU32 texture_address,
                             const SurfaceMask *mask, const CasterDraw &draw);
+// The same drawing, leaving the clip window as the path left it (the LFB path's on the region).
+void draw_caster_flat(LightView &view, FxU32 texture_address, const SurfaceMask *mask,
+                      const CasterDraw &draw);
+
+// One shadow: a caster under a light.
+struct ShadowJob {
+  std::size_t caster = 0;  // index into scene.objects
+  std::size_t light = 0;   // index into scene.lights
+  LightView view;
+  ShadowTexture texture;
+  ReceiverCoords receivers;
+  // The direct path: step 1's drawing (and the receiver whose surface masked it, an index into
+  // FrameGeometry::objects) and the Glide state it began in, which load the texture into TMU
+  // memory again the very same way.
+  CasterDraw draw;
+  std::optional<std::size_t> mask_receiver;
+  GrState step1_state{};
+};
+
 // Step 2. The region read back with grLfbReadRegion and downloaded, the same 16-bit words, as
 // GR_TEXFMT_ARGB_4444 (Listing 5); on the direct path the words are already in texture memory.
 ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOptions &options,
                                   FxU32 texture_address);
+// Step 2 without the download (ShadowTexture::texels; nothing on the direct path), for a texture
+// step 2 could not place in TMU memory.
+ShadowTexture read_shadow_texture(const LightView &view, const ProjectedShadowOptions &options);
+// The TMU0 address of `job`'s texture for a pass about to draw with it, loaded there first when
+// `memory` says so (its read-back downloaded, or on the direct path step 1 drawn again, masked
+// by `geometry`'s receiver); nothing when step 1 could not draw it (the shim's error says why).
+std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemory &memory,
+                                         const FrameGeometry &geometry);
 // Step 3. Every receiver but the caster in the light's space: Listing 2's flags (facing the
 // light, not wholly outside its view), clipped where it is nearer the light than the caster, and
 // (s, t) from the light-space x, y in Glide's 0..256 units.
@@ -214,6 +240,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
 // the same light leaves it as it is (one darkening per light, however many shadows overlap).
 // render_projected_shadows restores step 4's depth between lights.
 void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options);
+// Step 5 for the shadows of one light, in order, each pixel darkened once (shadow_pass.cpp's
+// depth levels). Leaves marks in the depth buffer, a few codes nearer than step 4's surfaces.
+// `bind` gives the TMU address of a job's texture, loading it there first if it must (nothing:
+// it could not, and the job is left out).
+using BindShadowTexture = std::function<std::optional<FxU32>(const ShadowJob &)>;
+void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
+                                const ProjectedShadowOptions &options,
+                                const BindShadowTexture &bind);
 
 struct ShadowFrame {
   StepTimes times;
@@ -224,6 +258,11 @@ struct ShadowFrame {
   // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
   // every caster and light, cast or refused: what largest_texel_footprint_px bounds.
   float texel_footprint_px = 0.0f;
+  // Where step 2 placed the jobs' textures in TMU0 memory (ShadowTexture::id). When they did not
+  // all fit, or the slide textures took the memory of one, step 5 loaded textures
+  // (`textures_loaded`), and each mask pass loads them again as it draws.
+  ShadowTextureMemory textures;
+  bool textures_loaded = false;
 };
 
 // The whole frame in the article's order, into the back buffer. With `synchronous`, each step

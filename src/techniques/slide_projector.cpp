@@ -16,8 +16,6 @@ namespace gs {
 namespace {
 
 constexpr int kAttenuationRows = 32;  // the ramp's rows: aspect 8x1, the widest
-// TMU memory above the shadow textures' usual range; each pass downloads its own texture.
-constexpr FxU32 kProjectedTextureAddress = 0x180000;
 
 using VertexColor = std::function<glm::vec3(const ProjectedObject &, unsigned)>;  // 0..255
 
@@ -133,7 +131,7 @@ void use_texture(FxU32 address, GrLOD_t lod, GrAspectRatio_t aspect, GrTextureFo
 
 void use_beam_texture(const SpotLight &light) {
   std::vector<std::uint8_t> texels = beam_texels(light, kBeamMapSide);
-  use_texture(kProjectedTextureAddress, GR_LOD_128, GR_ASPECT_1x1, GR_TEXFMT_INTENSITY_8,
+  use_texture(kProjectiveTextureAddress, GR_LOD_128, GR_ASPECT_1x1, GR_TEXFMT_INTENSITY_8,
               texels.data());
 }
 
@@ -166,7 +164,7 @@ void form_exact_spotlight(const Scene &scene, const FrameGeometry &frame, const 
   std::vector<std::uint8_t> texels(ramp.size() * kAttenuationRows);
   for (int row = 0; row < kAttenuationRows; ++row)
     std::copy(ramp.begin(), ramp.end(), texels.begin() + row * kAttenuationMapWidth);
-  use_texture(kProjectedTextureAddress, GR_LOD_256, GR_ASPECT_8x1, GR_TEXFMT_INTENSITY_8,
+  use_texture(kProjectiveTextureAddress, GR_LOD_256, GR_ASPECT_8x1, GR_TEXFMT_INTENSITY_8,
               texels.data());
   grHints(GR_HINT_STWHINT, 0);
   grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_LOCAL,
@@ -215,7 +213,7 @@ void add_spotlight(const Scene &scene, const FrameGeometry &frame, const SpotLig
 void add_slide(const Scene &scene, const FrameGeometry &frame, const SpotLight &projector) {
   int side = 0;
   std::vector<FxU16> texels = slide_texels(projector, side);
-  use_texture(kProjectedTextureAddress, side == 128 ? GR_LOD_128 : GR_LOD_64, GR_ASPECT_1x1,
+  use_texture(kProjectiveTextureAddress, side == 128 ? GR_LOD_128 : GR_LOD_64, GR_ASPECT_1x1,
               GR_TEXFMT_RGB_565, texels.data());
   grHints(GR_HINT_STWHINT, GR_STWHINT_W_DIFF_TMU0);
   grColorCombine(GR_COMBINE_FUNCTION_SCALE_OTHER, GR_COMBINE_FACTOR_LOCAL,

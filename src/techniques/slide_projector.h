@@ -18,6 +18,11 @@
 
 namespace gs {
 
+// The TMU0 memory these passes download their textures into, [address, address + bytes): the
+// largest is a 128x128 slide in RGB_565. Above the shadow textures' usual range; a shadow
+// texture there is loaded again after a scene pass (ShadowTextureMemory::forget).
+inline constexpr FxU32 kProjectiveTextureAddress = 0x180000;
+inline constexpr FxU32 kProjectiveTextureBytes = 128 * 128 * 2;
 // True when a light projects a texture (a slide or a beam map), so the scene needs these passes.
 bool needs_projective_passes(const Scene &scene);
 // The scene pass when projective lights light the scene (render_scene calls it).

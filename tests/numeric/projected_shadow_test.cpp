@@ -33,6 +33,52 @@ class ProjectedShadowTest : public TechniqueTest {
     return mask;
   }
 
+  // box_over_floor with `boxes` small boxes more in a row, standing apart: touching ones hide
+  // each other's sides from the light, and each such pair takes one more texture
+  // (receiver_layers.h).
+  static gs::Scene boxes_in_a_row(int boxes) {
+    gs::Scene scene = box_over_floor();
+    for (int i = 0; i < boxes; ++i) {
+      scene.objects.push_back(object(
+          "box " + std::to_string(i), gs::make_box(glm::vec3(0.1f)),
+          {-3.2f + 0.35f * static_cast<float>(i), 1.0f, 1.0f}));
+    }
+    return scene;
+  }
+
+  // Every caster of `scene` casts, one 256-texel texture each on the direct path, and each the
+  // shadow it casts in a frame whose textures all fit: the mask is the union of the masks of the
+  // first half of the casters alone and the second half alone, pixel for pixel (the mask pass
+  // draws each texture alone). Returns the whole frame.
+  static gs::ShadowFrame expect_the_union_of_halves(const gs::Scene &scene) {
+    gs::ProjectedShadowOptions options;
+    options.size = 256;
+    options.direct_path = true;
+    const std::size_t casters = scene.objects.size() - 1;  // all but the floor
+    gs::ShadowFrame frame;
+    const std::vector<bool> all = shadow_mask(scene, options, &frame);
+    EXPECT_EQ(frame.jobs.size(), casters);
+    EXPECT_TRUE(frame.errors.empty()) << frame.errors.front();
+    EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
+    std::vector<bool> halves(all.size(), false);
+    for (int half = 0; half < 2; ++half) {
+      gs::Scene part = scene;
+      for (std::size_t k = 1; k < part.objects.size(); ++k) {
+        part.objects[k].casts_shadow = (k <= casters / 2) == (half == 0);
+      }
+      gs::ShadowFrame part_frame;
+      const std::vector<bool> mask = shadow_mask(part, options, &part_frame);
+      EXPECT_EQ(part_frame.jobs.size(), half == 0 ? casters / 2 : casters - casters / 2);
+      EXPECT_FALSE(part_frame.textures_loaded) << "half of them fit";
+      for (std::size_t p = 0; p < mask.size(); ++p) halves[p] = halves[p] || mask[p];
+    }
+    EXPECT_GT(count(all), 1000);
+    EXPECT_TRUE(all == halves) << count(all, halves) << " pixels in common of "
+                               << count(all) << " and "
+                               << count(halves);
+    return frame;
+  }
+
 
 
 
@@ -176,25 +222,22 @@ TEST_F(ProjectedShadowTest, A512MapIsFourVoodooTexturesThatShadowLikeOne) {
   EXPECT_LE(tiled_count, one_count * 105 / 100) << "tiles shadow more than the map";
 }
 
-TEST_F(ProjectedShadowTest, RunningOutOfTmuMemoryIsReported) {
-  // 20 casters at 256x256 ARGB_4444 need 2.5 MB; the TMU has 2 MB: 16 fit, the rest say so.
-  // The boxes stand apart: touching ones hide each other's sides from the light, and each such
-  // pair takes one more texture (receiver_layers.h).
-  gs::Scene scene = box_over_floor();
-  for (int i = 0; i < 19; ++i) {
-    scene.objects.push_back(object("box " + std::to_string(i), gs::make_box(glm::vec3(0.1f)),
-                                   {-3.2f + 0.35f * static_cast<float>(i), 1.0f, 1.0f}));
-  }
-  gs::ProjectedShadowOptions options;
-  options.size = 256;
-  options.direct_path = true;
-  gs::ShadowFrame frame;
-  shadow_mask(scene, options, &frame);
-  EXPECT_EQ(frame.jobs.size(), 16u);
-  int full = 0;
-  for (const std::string &w : frame.warnings) full += w.find("TMU memory is full") != std::string::npos;
-  EXPECT_EQ(full, 4);
-  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
+TEST_F(ProjectedShadowTest, TexturesBeyondTmuMemoryAreLoadedInTurn) {
+  // 20 casters at 256x256 ARGB_4444 need 2.5 MB; the TMU has 2 MB: step 2 places 16, and the
+  // other 4 are loaded (step 1 drawn again on the direct path) over textures already drawn with
+  // as step 5 and the mask pass come to them.
+  const gs::ShadowFrame frame = expect_the_union_of_halves(boxes_in_a_row(19));
+  EXPECT_TRUE(frame.textures_loaded);
+}
+
+TEST_F(ProjectedShadowTest, AShadowTextureWhereTheBeamMapGoesIsLoadedAgain) {
+  // A beam map's scene pass downloads its texture at 1.5 MB (kProjectiveTextureAddress), where
+  // the 13th 256-texel shadow texture lies: 14 casters, which all fit, and that one is loaded
+  // again after the scene pass.
+  gs::Scene scene = boxes_in_a_row(13);
+  scene.lights[0].beam = "round";
+  const gs::ShadowFrame frame = expect_the_union_of_halves(scene);
+  EXPECT_TRUE(frame.textures_loaded);
 }
 
 TEST_F(ProjectedShadowTest, ALightInsideTheCastersBoundingSphereStillCastsIt) {
