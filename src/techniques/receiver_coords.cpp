@@ -247,13 +247,16 @@ bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
-                                       const std::vector<bool> *receivers) {
+                                       const std::vector<bool> *receivers,
+                                       const std::vector<signed char> *depth_bands,
+                                       float caster_back) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
   // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
-  std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
-  view_planes.insert(view_planes.end(), view.tile_planes.begin(), view.tile_planes.end());
+  std::vector<glm::vec4> base_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
+  base_planes.insert(base_planes.end(), view.tile_planes.begin(), view.tile_planes.end());
+  std::vector<glm::vec4> view_planes;  // base_planes and the receiver's depth band, if any
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
   const glm::mat4 world_from_view = glm::inverse(view.view);
   std::vector<std::vector<glm::vec4>> beam_regions;
@@ -326,6 +329,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     if (r == caster || !receiver.object->receives_shadow) continue;
     if (receivers && !(*receivers)[r]) continue;
     receiver_edge_error = {};
+    // The depth band (light view space, -z against caster_back; the two bands' planes are each
+    // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
+    const signed char band = depth_bands ? (*depth_bands)[r] : 0;
+    view_planes = base_planes;
+    if (band != 0) {
+      const float side = static_cast<float>(band);  // -1: keep -z <= back; +1: keep -z >= back
+      view_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
+    }
     const std::size_t n = receiver.world.size();
     std::vector<glm::vec4> lc(n);  // light clip
     std::vector<unsigned> flags(n);
@@ -335,15 +346,16 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
                  (p.w < view.caster_front) << 4;
       if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
+      if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
     }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
       if (glm::dot(face, light.position - a) <= 0.0f) continue;
-      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
+      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x5F) != 0) continue;
       const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
-      const bool in_front = (any_outside & 0x10) != 0;
+      const bool in_front = (any_outside & 0x50) != 0;
       const bool beyond_beam = (any_outside & 0x20) != 0;
       const bool needs_clip =
           in_front || beyond_beam || (!view.tile_planes.empty() && (any_outside & 0xF) != 0);
