@@ -196,14 +196,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         if (!fitted.outside_beam) result.errors.push_back(fitted.problem);
         continue;
       }
-      float caster_back = 0.0f;  // the caster's farthest vertex from the light, light view -z
-      {
-        const SceneObject &object = scene.objects[caster];
-        for (const glm::vec3 &position : caster_mesh(object).positions) {
-          const glm::vec4 world = object.model_to_world * glm::vec4(position, 1.0f);
-          caster_back = std::max(caster_back, -(fitted.view * world).z);
-        }
-      }
+      const float caster_back = farthest_depth(scene.objects[caster], fitted.view);
       // This caster's textures (a map above 256 is several, and one more per planar receiver it
       // reaches through); kept only if every one's texels are fine enough for the screen where
       // the shadow falls.
