@@ -207,7 +207,8 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
 // `caster_back` (light view depth, metres; -1), or only the part beyond it (+1), or all (0):
 // a receiver whose surface masks the caster (pierced_receivers.h) takes the masked texture
 // nearer than the caster's farthest point and the whole caster's beyond it, where every caster
-// point on the light's ray lies in front of the receiver and shadows it.
+// point on the light's ray lies in front of the receiver and shadows it. A triangle across that
+// depth which no part of its receiver hides from the light takes the masked texture, uncut.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
