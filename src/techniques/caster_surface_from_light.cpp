@@ -41,11 +41,14 @@ void clip_to_edge(std::vector<PolygonCorner> &polygon, const glm::vec2 &a, const
 
 }  // namespace
 
-CasterSurfaceFromLight::CasterSurfaceFromLight(const SceneObject &caster, const glm::mat4 &light_clip) {
-  const Mesh &mesh = caster_mesh(caster);
+CasterSurfaceFromLight::CasterSurfaceFromLight(const SceneObject &caster, const glm::mat4 &light_clip)
+    : CasterSurfaceFromLight(caster_mesh(caster), caster.model_to_world, light_clip) {}
+
+CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4 &model_to_world,
+                                               const glm::mat4 &light_clip) {
   std::vector<glm::vec4> clip(mesh.positions.size());
   for (std::size_t i = 0; i < clip.size(); ++i) {
-    clip[i] = light_clip * (caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    clip[i] = light_clip * (model_to_world * glm::vec4(mesh.positions[i], 1.0f));
     if (!(clip[i].w > 0.0f)) usable_ = false;
   }
   if (!usable_) return;

@@ -24,6 +24,10 @@ class CasterSurfaceFromLight {
   // caster's shadow mesh (caster_mesh, both sides), unclipped: more surface than step 1 draws,
   // so a polygon judged free of it is free of the texture's shadow too.
   CasterSurfaceFromLight(const SceneObject &caster, const glm::mat4 &light_clip);
+  // Any mesh (model space, placed by `model_to_world`), both sides: a receiver's own drawn
+  // surface, to tell its triangles that no other part of it hides from the light.
+  CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4 &model_to_world,
+                         const glm::mat4 &light_clip);
 
   // False only when no point of the convex polygon (light clip corners in order, `count` of
   // them) has a caster surface nearer the light than itself by more than touching (a relative

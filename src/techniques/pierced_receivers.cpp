@@ -78,4 +78,13 @@ std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGe
   return pierced;
 }
 
+float farthest_depth(const SceneObject &caster, const glm::mat4 &light_view) {
+  float depth = 0.0f;
+  for (const glm::vec3 &position : caster_mesh(caster).positions) {
+    const glm::vec4 world = caster.model_to_world * glm::vec4(position, 1.0f);
+    depth = std::max(depth, -(light_view * world).z);
+  }
+  return depth;
+}
+
 }  // namespace gs

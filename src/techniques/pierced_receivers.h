@@ -47,6 +47,11 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
                      const std::vector<glm::uvec3> &caster_triangles, const glm::vec3 &low,
                      const glm::vec3 &high, float tolerance, PiercedReceiver &pierced);
 
+// The caster's farthest vertex (caster_mesh) from the light: light view depth -z, metres, for
+// `light_view` (world to light view). A receiver masking the caster takes the masked texture
+// nearer the light than this and the whole caster's beyond it (compute_receiver_coords).
+float farthest_depth(const SceneObject &caster, const glm::mat4 &light_view);
+
 // Step 1 for a non-planar pierced receiver (render_caster_from_light with a SurfaceMask, after
 // its clear of colour and of depth to the farthest W): the receiver's triangles facing the light, clipped to the light's view, drawn into
 // the depth buffer only where the caster can draw (within a texel of view.covered's cells), and the depth test left at LESS with depth writes off, so the caster

@@ -70,6 +70,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         if (!fitted.outside_beam) result.errors.push_back(fitted.problem);
         continue;
       }
+      const float caster_back = farthest_depth(scene.objects[caster], fitted.view);
       // This caster's textures (a map above 256 is several, and one more per planar receiver it
       // reaches through); kept only if every one's texels are fine enough for the screen where
       // the shadow falls.
@@ -82,7 +83,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // it reaches through (the mask changes only W and adds the cut to the silhouette), so it
       // is made once per caster.
       std::vector<std::optional<std::pair<LightView, CasterDraw>>> shared_covers;
-      auto cast = [&](const std::vector<bool> &receivers, const PiercedReceiver *pierced) {
+      auto cast = [&](const std::vector<bool> &receivers, const std::vector<signed char> &bands,
+                      const PiercedReceiver *pierced) {
         const std::vector<LightView> parts = split_into_textures(fitted);
         shared_covers.resize(parts.size());
         for (std::size_t index = 0; index < parts.size(); ++index) {
@@ -135,7 +137,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           // fighter's shadow, receives nothing from it in most frames of the demo).
           step_start = Clock::now();
           job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                  job.view, options, &receivers);  // 3
+                                                  job.view, options, &receivers, &bands,
+                                                  caster_back);  // 3
           finish_step(2, step_start);
           if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
               std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),
@@ -195,18 +198,28 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       }
       result.times.ms[0] += elapsed_ms(start);
       std::vector<bool> receivers(scene.objects.size(), true);
-      for (const PiercedReceiver &p : pierced) receivers[p.receiver] = false;
+      // A receiver masking the caster takes the masked texture only nearer the light than the
+      // caster's farthest vertex (light view depth), and the whole caster's beyond it: there
+      // every caster point on the light's ray is in front of it, buried or hidden or not, and
+      // shadows it (a foot in a dune shadows the dune's far slope).
+      std::vector<signed char> bands(scene.objects.size(), 0);
+      for (const PiercedReceiver &p : pierced) {
+        receivers[p.receiver] = !p.planar;
+        if (!p.planar) bands[p.receiver] = 1;
+      }
       for (std::size_t r : layers.between) receivers[r] = false;
       bool others = false;  // a receiver left for the whole caster's texture
       for (std::size_t r = 0; r < scene.objects.size(); ++r) {
         others = others || (receivers[r] && r != caster && scene.objects[r].receives_shadow);
       }
-      if (others) cast(receivers, nullptr);
+      if (others) cast(receivers, bands, nullptr);
       for (const PiercedReceiver &p : pierced) {
         if (!p.casts) continue;  // nothing of the caster on the light's side: no shadow on it
         std::vector<bool> only(scene.objects.size(), false);
         only[p.receiver] = true;
-        cast(only, &p);
+        std::vector<signed char> near(scene.objects.size(), 0);
+        if (!p.planar) near[p.receiver] = -1;
+        cast(only, near, &p);
       }
       std::vector<FootprintSample> samples;
       for (const ShadowJob &job : caster_jobs) {

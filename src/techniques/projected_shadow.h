@@ -229,10 +229,18 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // light, not wholly outside its view), clipped where it is nearer the light than the caster, and
 // (s, t) from the light-space x, y in Glide's 0..256 units.
 // `receivers`, when given, marks (per scene object) the receivers this texture is for.
+// `depth_bands`, when given, keeps of each receiver only the part nearer the light than
+// `caster_back` (light view depth, metres; -1), or only the part beyond it (+1), or all (0):
+// a receiver whose surface masks the caster (pierced_receivers.h) takes the masked texture
+// nearer than the caster's farthest point and the whole caster's beyond it, where every caster
+// point on the light's ray lies in front of the receiver and shadows it. A triangle across that
+// depth which no part of its receiver hides from the light takes the masked texture, uncut.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
-                                       const std::vector<bool> *receivers = nullptr);
+                                       const std::vector<bool> *receivers = nullptr,
+                                       const std::vector<signed char> *depth_bands = nullptr,
+                                       float caster_back = 0.0f);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended

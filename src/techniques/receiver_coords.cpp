@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -247,13 +248,16 @@ bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
-                                       const std::vector<bool> *receivers) {
+                                       const std::vector<bool> *receivers,
+                                       const std::vector<signed char> *depth_bands,
+                                       float caster_back) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
   // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
   std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
   view_planes.insert(view_planes.end(), view.tile_planes.begin(), view.tile_planes.end());
+  std::vector<glm::vec4> band_planes;  // view_planes and the receiver's depth band's plane
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
   const glm::mat4 world_from_view = glm::inverse(view.view);
   std::vector<std::vector<glm::vec4>> beam_regions;
@@ -326,6 +330,16 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     if (r == caster || !receiver.object->receives_shadow) continue;
     if (receivers && !(*receivers)[r]) continue;
     receiver_edge_error = {};
+    // The depth band (light view space, -z against caster_back; the two bands' planes are each
+    // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
+    const signed char band = depth_bands ? (*depth_bands)[r] : 0;
+    const float side = static_cast<float>(band);  // -1: keep -z <= back; +1: keep -z >= back
+    band_planes = view_planes;
+    band_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
+    // The receiver's own surface (light clip), made at its first triangle across the band's
+    // plane: one that no part of the receiver hides from the light is its surface the mask
+    // drew, where the masked texture is exact, so it takes that texture whole and is not cut.
+    std::optional<CasterSurfaceFromLight> own_surface;
     const std::size_t n = receiver.world.size();
     std::vector<glm::vec4> lc(n);  // light clip
     std::vector<unsigned> flags(n);
@@ -335,15 +349,27 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
                  (p.w < view.caster_front) << 4;
       if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
+      if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
     }
     for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
       if (glm::dot(face, light.position - a) <= 0.0f) continue;
-      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x1F) != 0) continue;
-      const unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
-      const bool in_front = (any_outside & 0x10) != 0;
+      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x5F) != 0) continue;
+      unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
+      if ((any_outside & 0x40) != 0) {  // across the band's plane
+        if (!own_surface) {
+          own_surface.emplace(receiver.object->mesh, receiver.object->model_to_world, light_clip);
+        }
+        const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
+        if (!own_surface->may_shadow(corners, 3)) {
+          if (band > 0) continue;  // the masked texture's, whole
+          any_outside &= ~0x40u;
+        }
+      }
+      const std::vector<glm::vec4> &planes = (any_outside & 0x40) != 0 ? band_planes : view_planes;
+      const bool in_front = (any_outside & 0x50) != 0;
       const bool beyond_beam = (any_outside & 0x20) != 0;
       const bool needs_clip =
           in_front || beyond_beam || (!view.tile_planes.empty() && (any_outside & 0xF) != 0);
@@ -379,7 +405,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       for (unsigned i : {t.x, t.y, t.z}) {
         polygon.push_back({view.view * glm::vec4(receiver.world[i], 1.0f), receiver.world[i], {}});
       }
-      for (const glm::vec4 &plane : view_planes) {
+      for (const glm::vec4 &plane : planes) {
         clip_polygon(polygon, plane, scratch);
         if (polygon.size() < 3) break;
       }
@@ -390,7 +416,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const std::size_t pieces = beyond_beam ? beam_regions.size() : 1;
       for (std::size_t piece = 0; piece < pieces; ++piece) {
         std::vector<ClipVertex> part = polygon;
-        std::vector<glm::vec4> piece_planes = view_planes;  // light view space
+        std::vector<glm::vec4> piece_planes = planes;  // light view space
         if (beyond_beam) {
           piece_planes.insert(piece_planes.end(), beam_regions[piece].begin(), beam_regions[piece].end());
           for (const glm::vec4 &plane : beam_regions[piece]) {
