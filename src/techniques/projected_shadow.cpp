@@ -6,6 +6,7 @@
 #include "techniques/projected_shadow.h"
 #include "techniques/step_clock.h"
 
+#include "techniques/caster_surface_from_light.h"
 #include "techniques/pierced_receivers.h"
 #include "techniques/receiver_layers.h"
 
@@ -208,6 +209,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // it reaches through (the mask changes only W and adds the cut to the silhouette), so it
       // is made once per caster.
       std::vector<std::optional<std::pair<LightView, CasterDraw>>> shared_covers;
+      CasterSurfacesFromLight surfaces(scene.objects[caster]);  // step 3's, shared the same way
       auto cast = [&](const std::vector<bool> &receivers, const PiercedReceiver *pierced) {
         const std::vector<LightView> parts = split_into_textures(fitted);
         shared_covers.resize(parts.size());
@@ -257,7 +259,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           // fighter's shadow, receives nothing from it in most frames of the demo).
           step_start = Clock::now();
           job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                  job.view, options, &receivers);  // 3
+                                                  job.view, options, &receivers, &surfaces);  // 3
           finish_step(2, step_start);
           if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
               std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),

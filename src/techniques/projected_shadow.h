@@ -21,6 +21,8 @@
 
 namespace gs {
 
+class CasterSurfacesFromLight;  // caster_surface_from_light.h
+
 enum class ShadowAlpha { Constant, Distance };  // iterated alpha: the light's strength, or it
                                                 // fading with the receiver's distance
 
@@ -202,11 +204,13 @@ ShadowTexture make_shadow_texture(const LightView &view, const ProjectedShadowOp
 // Step 3. Every receiver but the caster in the light's space: Listing 2's flags (facing the
 // light, not wholly outside its view), clipped where it is nearer the light than the caster, and
 // (s, t) from the light-space x, y in Glide's 0..256 units.
-// `receivers`, when given, marks (per scene object) the receivers this texture is for.
+// `receivers`, when given, marks (per scene object) the receivers this texture is for;
+// `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
-                                       const std::vector<bool> *receivers = nullptr);
+                                       const std::vector<bool> *receivers = nullptr,
+                                       CasterSurfacesFromLight *surfaces = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended

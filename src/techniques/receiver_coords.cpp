@@ -247,7 +247,8 @@ bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
-                                       const std::vector<bool> *receivers) {
+                                       const std::vector<bool> *receivers,
+                                       CasterSurfacesFromLight *surfaces) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -283,7 +284,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     segment_boxes.emplace_back(low, high);
   }
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
-  const CasterSurfaceFromLight caster_surface(scene.objects[caster], light_clip);
+  CasterSurfacesFromLight own(scene.objects[caster]);
+  const CasterSurfaceFromLight &caster_surface = (surfaces ? *surfaces : own).at(light_clip);
   std::vector<std::size_t> candidates;
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   std::vector<DrawnPiece> drawn_pieces;
