@@ -125,9 +125,13 @@ struct Outline {
   static Edge key(const glm::vec3 &p, const glm::vec3 &q) {
     return less(p, q) ? Edge(p, q) : Edge(q, p);
   }
-  static bool edge_less(const Edge &a, const Edge &b) {
-    return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
-  }
+  // A function object, not a function: the sort and the searches call it inline.
+  struct EdgeLess {
+    bool operator()(const Edge &a, const Edge &b) const {
+      return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
+    }
+  };
+  static constexpr EdgeLess edge_less{};
   bool contains(const glm::vec3 &p, const glm::vec3 &q) const {
     return std::binary_search(edges.begin(), edges.end(), key(p, q), edge_less);
   }
