@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace gs {
 namespace {
@@ -134,6 +135,14 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
     }
   }
   return false;
+}
+
+const CasterSurfaceFromLight &CasterSurfacesFromLight::at(const glm::mat4 &light_clip) {
+  for (const auto &[matrix, surface] : built_) {
+    if (std::memcmp(&matrix, &light_clip, sizeof matrix) == 0) return *surface;
+  }
+  built_.emplace_back(light_clip, std::make_unique<CasterSurfaceFromLight>(caster_, light_clip));
+  return *built_.back().second;
 }
 
 }  // namespace gs

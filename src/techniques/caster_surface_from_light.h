@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -59,6 +61,21 @@ class CasterSurfaceFromLight {
   mutable std::size_t query_ = 0;
   // may_shadow's polygons, kept so that a query (one per receiver triangle) allocates nothing.
   mutable std::vector<PolygonCorner> polygon_, part_, scratch_;
+};
+
+// One caster's surfaces for the light clip matrices of its textures, each built once: the
+// plain and masked textures of a light view part share the matrix (the mask changes only what
+// step 1 draws), so step 3 of each reuses the same grid instead of building it again.
+class CasterSurfacesFromLight {
+ public:
+  explicit CasterSurfacesFromLight(const SceneObject &caster) : caster_(caster) {}
+  // The surface for `light_clip` (world to light clip), built at the first call with a matrix
+  // of the same bytes.
+  const CasterSurfaceFromLight &at(const glm::mat4 &light_clip);
+
+ private:
+  const SceneObject &caster_;
+  std::vector<std::pair<glm::mat4, std::unique_ptr<CasterSurfaceFromLight>>> built_;
 };
 
 }  // namespace gs

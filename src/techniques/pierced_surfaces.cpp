@@ -112,7 +112,11 @@ struct Outline {
     glm::vec3 corner[3];  // world
     glm::vec2 screen[3];  // light screen, texels
     bool in_front;        // every corner before the light (else it is taken to overlap all)
+    glm::vec2 low, high;  // box of `screen`; the whole plane unless in front and within kNear
   };
+  // Light screen texels: within this of the view, float rounding in a separating-axis test
+  // is below 1e-3 texel.
+  static constexpr float kNear = 1e4f;
   std::vector<Edge> edges;
   std::vector<Lit> lit;
   static bool less(const glm::vec3 &p, const glm::vec3 &q) {
@@ -121,9 +125,13 @@ struct Outline {
   static Edge key(const glm::vec3 &p, const glm::vec3 &q) {
     return less(p, q) ? Edge(p, q) : Edge(q, p);
   }
-  static bool edge_less(const Edge &a, const Edge &b) {
-    return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
-  }
+  // A function object, not a function: the sort and the searches call it inline.
+  struct EdgeLess {
+    bool operator()(const Edge &a, const Edge &b) const {
+      return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
+    }
+  };
+  static constexpr EdgeLess edge_less{};
   bool contains(const glm::vec3 &p, const glm::vec3 &q) const {
     return std::binary_search(edges.begin(), edges.end(), key(p, q), edge_less);
   }
@@ -141,7 +149,17 @@ struct Outline {
       }
       return false;
     };
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const glm::vec2 &corner : fin) low = glm::min(low, corner), high = glm::max(high, corner);
     for (const Lit &t : lit) {
+      // Boxes more than a texel apart: the fin (a rectangle, whose right angles put one of the
+      // two polygons' edge normals within 45 degrees of the direction between their nearest
+      // points) and the triangle are separated by more than 0.7 texel along that normal, which
+      // `separated` finds whatever the rounding; skipped before the tests below, as they would.
+      if (t.high.x + 1.0f < low.x || high.x + 1.0f < t.low.x || t.high.y + 1.0f < low.y ||
+          high.y + 1.0f < t.low.y) {
+        continue;
+      }
       bool neighbour = false;
       for (const glm::vec3 &corner : t.corner) neighbour = neighbour || corner == p || corner == q;
       if (neighbour) continue;
@@ -162,13 +180,18 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
     all.push_back(Outline::key(a, b));
     all.push_back(Outline::key(b, c));
     all.push_back(Outline::key(c, a));
-    Outline::Lit lit{{a, b, c}, {}, true};
+    Outline::Lit lit{{a, b, c}, {}, true, glm::vec2(INFINITY), glm::vec2(-INFINITY)};
+    bool near = true;
     int k = 0;
     for (unsigned i : {t.x, t.y, t.z}) {
       lit.in_front = lit.in_front && clip[i].w > 0.0f;
       const GrVertex v = to_screen(clip[i], view.size, view.size);
-      lit.screen[k++] = glm::vec2(v.x, v.y);
+      lit.screen[k] = glm::vec2(v.x, v.y);
+      near = near && std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear;
+      lit.low = glm::min(lit.low, lit.screen[k]), lit.high = glm::max(lit.high, lit.screen[k]);
+      ++k;
     }
+    if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
     outline.lit.push_back(lit);
   }
   std::sort(all.begin(), all.end(), Outline::edge_less);

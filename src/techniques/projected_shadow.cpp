@@ -7,6 +7,7 @@
 #include "techniques/projected_shadow.h"
 #include "techniques/step_clock.h"
 
+#include "techniques/caster_surface_from_light.h"
 #include "techniques/pierced_receivers.h"
 #include "techniques/receiver_layers.h"
 #include "techniques/slide_projector.h"
@@ -83,6 +84,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // it reaches through (the mask changes only W and adds the cut to the silhouette), so it
       // is made once per caster.
       std::vector<std::optional<std::pair<LightView, CasterDraw>>> shared_covers;
+      CasterSurfacesFromLight surfaces(scene.objects[caster]);  // step 3's, shared the same way
       auto cast = [&](const std::vector<bool> &receivers, const std::vector<signed char> &bands,
                       const PiercedReceiver *pierced) {
         const std::vector<LightView> parts = split_into_textures(fitted);
@@ -138,7 +140,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           step_start = Clock::now();
           job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
                                                   job.view, options, &receivers, &bands,
-                                                  caster_back);  // 3
+                                                  caster_back, &surfaces);  // 3
           finish_step(2, step_start);
           if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
               std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),

@@ -24,6 +24,8 @@
 
 namespace gs {
 
+class CasterSurfacesFromLight;  // caster_surface_from_light.h
+
 enum class ShadowAlpha { Constant, Distance };  // iterated alpha: the light's strength, or it
                                                 // fading with the receiver's distance
 
@@ -235,12 +237,14 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // nearer than the caster's farthest point and the whole caster's beyond it, where every caster
 // point on the light's ray lies in front of the receiver and shadows it. A triangle across that
 // depth which no part of its receiver hides from the light takes the masked texture, uncut.
+// `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
                                        const std::vector<bool> *receivers = nullptr,
                                        const std::vector<signed char> *depth_bands = nullptr,
-                                       float caster_back = 0.0f);
+                                       float caster_back = 0.0f,
+                                       CasterSurfacesFromLight *surfaces = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended

@@ -250,7 +250,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const LightView &view, const ProjectedShadowOptions &options,
                                        const std::vector<bool> *receivers,
                                        const std::vector<signed char> *depth_bands,
-                                       float caster_back) {
+                                       float caster_back, CasterSurfacesFromLight *surfaces) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -287,7 +287,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     segment_boxes.emplace_back(low, high);
   }
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
-  const CasterSurfaceFromLight caster_surface(scene.objects[caster], light_clip);
+  CasterSurfacesFromLight own(scene.objects[caster]);
+  const CasterSurfaceFromLight &caster_surface = (surfaces ? *surfaces : own).at(light_clip);
   std::vector<std::size_t> candidates;
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   std::vector<DrawnPiece> drawn_pieces;
