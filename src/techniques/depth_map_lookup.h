@@ -3,9 +3,11 @@
 // depth change across the lookup's reach (a receiver-plane bias). A lit surface reads, within
 // the lookup's 2x2 of texels, samples of its own plane up to that change nearer than itself;
 // lowering the receiver's depth instead of pushing the caster back leaves every caster where it
-// is, so a face the light sees almost edge-on still shadows the floor close behind it. Spaces:
-// world (the corners); light texture (s, t, r, q: s/q, t/q in 0..1 across the map, r/q the map's
-// depth 0..1, q the light-view depth).
+// is, so a face the light sees almost edge-on still shadows the floor close behind it. Only a
+// receiver that casts takes it (depth_map_passes.h, draw_receiver): the map holds no depth of
+// one that does not, and near a caster standing on it the bias would lift it past that caster's
+// surface. Spaces: world (the corners); light texture (s, t, r, q: s/q, t/q in 0..1 across the
+// map, r/q the map's depth 0..1, q the light-view depth).
 #pragma once
 
 #include <glm/glm.hpp>

@@ -74,8 +74,13 @@ class Passes {
   // Appendix A).
   void bind_shadow_units(std::size_t light, GLenum compare);
   // A receiver's triangles, three world corners each, with their colours and the bound light's
-  // map coordinates lowered by each triangle's own depth slope (depth_map_lookup.h).
-  void draw_receiver(const std::vector<glm::vec3> &corners, const std::vector<glm::vec4> &colors);
+  // map coordinates, lowered by each triangle's own depth slope (depth_map_lookup.h) when the
+  // receiver `casts`. A receiver that casts nothing has no depths of its own in the map, so it
+  // has no acne to take off; lowered, it would only come out nearer the light than the caster
+  // surfaces it meets, up to about a texel past the contact, which under a grazing light spans
+  // far across it (grazing_2046: 0.46% interior false light along a sunk ball's foot).
+  void draw_receiver(const std::vector<glm::vec3> &corners, const std::vector<glm::vec4> &colors,
+                     bool casts);
   void release_shadow_units();
   void draw(const WorldMesh &mesh, const std::vector<glm::vec4> &colors);
   // Step 1: a caster's triangles at `positions` (world), with whatever offset is set.

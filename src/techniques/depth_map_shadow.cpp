@@ -164,7 +164,7 @@ void Passes::lit_passes() {
             corner_colors.push_back(colors[triangle[k]]);
           }
         }
-        draw_receiver(corners, corner_colors);
+        draw_receiver(corners, corner_colors, mesh.object->casts_shadow);
       } else {
         gl_.glDisable(GL_TEXTURE_2D);
         draw(mesh, colors);
@@ -209,7 +209,7 @@ void Passes::mask_passes() {
       // Unshared corners from the same world positions: the depths the ambient pass wrote.
       const FacingTriangles triangles =
           facing_triangles(mesh.position, mesh.object->mesh.triangles, spot.position);
-      draw_receiver(triangles.position, triangles.color);
+      draw_receiver(triangles.position, triangles.color, mesh.object->casts_shadow);
     }
     footprint.release();
   }
@@ -269,9 +269,9 @@ void Passes::release_shadow_units() {
 }
 
 void Passes::draw_receiver(const std::vector<glm::vec3> &corners,
-                           const std::vector<glm::vec4> &colors) {
+                           const std::vector<glm::vec4> &colors, bool casts) {
   const std::vector<glm::vec4> coords =
-      biased_map_coords(corners, to_map_, bound_side_, options_.depth_bias_receiver);
+      biased_map_coords(corners, to_map_, bound_side_, casts ? options_.depth_bias_receiver : 0.0f);
   gl_.glEnableClientState(GL_TEXTURE_COORD_ARRAY);  // client unit 0, the map's
   gl_.glTexCoordPointer(4, GL_FLOAT, 0, coords.data());
   gl_.glVertexPointer(3, GL_FLOAT, 0, corners.data());
