@@ -145,4 +145,18 @@ const CasterSurfaceFromLight &CasterSurfacesFromLight::at(const glm::mat4 &light
   return *built_.back().second;
 }
 
+const CasterSurfaceFromLight &CasterSurfacesFromLight::receiver_at(const SceneObject &receiver,
+                                                                   const glm::mat4 &light_clip) {
+  for (const ReceiverSurface &built : receivers_) {
+    if (built.receiver == &receiver &&
+        std::memcmp(&built.light_clip, &light_clip, sizeof light_clip) == 0) {
+      return *built.surface;
+    }
+  }
+  receivers_.push_back({&receiver, light_clip,
+                        std::make_unique<CasterSurfaceFromLight>(receiver.mesh, receiver.model_to_world,
+                                                                 light_clip)});
+  return *receivers_.back().surface;
+}
+
 }  // namespace gs

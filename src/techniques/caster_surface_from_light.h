@@ -65,17 +65,29 @@ class CasterSurfaceFromLight {
 
 // One caster's surfaces for the light clip matrices of its textures, each built once: the
 // plain and masked textures of a light view part share the matrix (the mask changes only what
-// step 1 draws), so step 3 of each reuses the same grid instead of building it again.
+// step 1 draws), so step 3 of each reuses the same grid instead of building it again. The same
+// for the receivers' own drawn surfaces that step 3 tests a receiver's triangles against: the
+// caster's two depth-band textures of a light view (one per band, the same matrix) share them.
+// Meant for one frame: the scene's objects must not change while it is in use.
 class CasterSurfacesFromLight {
  public:
   explicit CasterSurfacesFromLight(const SceneObject &caster) : caster_(caster) {}
   // The surface for `light_clip` (world to light clip), built at the first call with a matrix
   // of the same bytes.
   const CasterSurfaceFromLight &at(const glm::mat4 &light_clip);
+  // `receiver`'s own drawn surface (its `mesh`, placed by its model_to_world, both sides) for
+  // `light_clip`, built at the first call for that object with a matrix of the same bytes.
+  const CasterSurfaceFromLight &receiver_at(const SceneObject &receiver, const glm::mat4 &light_clip);
 
  private:
+  struct ReceiverSurface {
+    const SceneObject *receiver;
+    glm::mat4 light_clip;  // world to light clip
+    std::unique_ptr<CasterSurfaceFromLight> surface;
+  };
   const SceneObject &caster_;
   std::vector<std::pair<glm::mat4, std::unique_ptr<CasterSurfaceFromLight>>> built_;
+  std::vector<ReceiverSurface> receivers_;
 };
 
 }  // namespace gs
