@@ -137,6 +137,19 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
   return false;
 }
 
+bool CasterSurfaceFromLight::may_shadow_triangle(const SceneObject &receiver, std::size_t triangle,
+                                                 const glm::vec4 (&corners)[3]) const {
+  auto known = std::find_if(answers_.begin(), answers_.end(),
+                            [&](const auto &entry) { return entry.first == &receiver; });
+  if (known == answers_.end()) {
+    answers_.emplace_back(&receiver, std::vector<signed char>(receiver.mesh.triangles.size(), -1));
+    known = answers_.end() - 1;
+  }
+  signed char &answer = known->second[triangle];
+  if (answer < 0) answer = may_shadow(corners, 3) ? 1 : 0;
+  return answer != 0;
+}
+
 const CasterSurfaceFromLight &CasterSurfacesFromLight::at(const glm::mat4 &light_clip) {
   for (const auto &[matrix, surface] : built_) {
     if (std::memcmp(&matrix, &light_clip, sizeof matrix) == 0) return *surface;

@@ -36,6 +36,12 @@ class CasterSurfaceFromLight {
   // kTouch of its depth: a post's foot on the table top). True when unsure (a corner at or
   // behind the light's plane, or the caster reaching there).
   bool may_shadow(const glm::vec4 *light_clip, std::size_t count) const;
+  // may_shadow of the triangle `triangle` (an index into `receiver`'s mesh) whose light clip
+  // corners are `corners` (this matrix times the receiver's world vertices this frame: the same
+  // at every call for that triangle), answered once and then remembered: the caster's textures
+  // that share this surface (a receiver's two depth bands) ask about the same triangles.
+  bool may_shadow_triangle(const SceneObject &receiver, std::size_t triangle,
+                           const glm::vec4 (&corners)[3]) const;
 
  // A corner of a receiver polygon as may_shadow clips it (light NDC).
   struct PolygonCorner {
@@ -61,6 +67,8 @@ class CasterSurfaceFromLight {
   mutable std::size_t query_ = 0;
   // may_shadow's polygons, kept so that a query (one per receiver triangle) allocates nothing.
   mutable std::vector<PolygonCorner> polygon_, part_, scratch_;
+  // may_shadow_triangle's answers per receiver and triangle: -1 not asked yet, else 0 or 1.
+  mutable std::vector<std::pair<const SceneObject *, std::vector<signed char>>> answers_;
 };
 
 // One caster's surfaces for the light clip matrices of its textures, each built once: the

@@ -297,7 +297,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
       if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
     }
-    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    const std::vector<glm::uvec3> &triangles = receiver.object->mesh.triangles;
+    for (const glm::uvec3 &t : triangles) {
+      const auto number = static_cast<std::size_t>(&t - triangles.data());  // in the mesh
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
@@ -307,7 +309,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       if ((any_outside & 0x40) != 0) {  // across the band's plane
         if (!own_surface) own_surface = &built.receiver_at(*receiver.object, light_clip);
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        if (!own_surface->may_shadow(corners, 3)) {
+        if (!own_surface->may_shadow_triangle(*receiver.object, number, corners)) {
           if (band > 0) continue;  // the masked texture's, whole
           any_outside &= ~0x40u;
         }
@@ -324,7 +326,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // Wholly nearer the light than the caster's surface behind it: never in its shadow. An
       // exact triangle stays in the list, as Listing 2 flags it, but step 5 does not draw it.
       const glm::vec4 light_corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-      const bool may_shadow = caster_surface.may_shadow(light_corners, 3);
+      const bool may_shadow = caster_surface.may_shadow_triangle(*receiver.object, number, light_corners);
       const bool exact = !needs_clip &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
       if (!may_shadow && !exact) continue;
