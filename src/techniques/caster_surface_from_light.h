@@ -62,6 +62,7 @@ class CasterSurfaceFromLight {
   bool usable_ = true;
   std::vector<Face> faces_;
   glm::vec2 low_{INFINITY}, high_{-INFINITY};  // NDC box of all faces
+  glm::vec2 cell_side_{1.0f};                  // NDC: a grid cell's width and height
   std::vector<std::size_t> start_, items_;     // per cell its faces: items_[start_[c]..start_[c+1])
   mutable std::vector<std::size_t> stamp_;     // per face, the query that last tested it
   mutable std::size_t query_ = 0;
