@@ -53,6 +53,7 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4
     if (!(clip[i].w > 0.0f)) usable_ = false;
   }
   if (!usable_) return;
+  faces_.reserve(mesh.triangles.size());
   for (const glm::uvec3 &t : mesh.triangles) {
     const glm::vec4 &a = clip[t.x], &b = clip[t.y], &c = clip[t.z];
     Face face;
@@ -67,27 +68,34 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4
     low_ = glm::min(low_, face.low), high_ = glm::max(high_, face.high);
     faces_.push_back(face);
   }
-  start_.assign(kGrid * kGrid + 1, 0);
-  auto each_cell = [&](const Face &face, auto &&visit) {
-    for (int y = cell_of(face.low.y, 1); y <= cell_of(face.high.y, 1); ++y) {
-      for (int x = cell_of(face.low.x, 0); x <= cell_of(face.high.x, 0); ++x) {
-        visit(static_cast<std::size_t>(y * kGrid + x));
-      }
+  for (int axis = 0; axis < 2; ++axis) {
+    cell_side_[axis] = std::max(high_[axis] - low_[axis], 1e-12f) / kGrid;
+  }
+  // Each face's cells (first and last column, first and last row), found once for both passes.
+  std::vector<glm::ivec4> spans(faces_.size());
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const Face &face = faces_[f];
+    spans[f] = {cell_of(face.low.x, 0), cell_of(face.high.x, 0), cell_of(face.low.y, 1),
+                cell_of(face.high.y, 1)};
+  }
+  auto each_cell = [&](const glm::ivec4 &span, auto &&visit) {
+    for (int y = span.z; y <= span.w; ++y) {
+      for (int x = span.x; x <= span.y; ++x) visit(static_cast<std::size_t>(y * kGrid + x));
     }
   };
-  for (const Face &face : faces_) each_cell(face, [&](std::size_t cell) { ++start_[cell + 1]; });
+  start_.assign(kGrid * kGrid + 1, 0);
+  for (const glm::ivec4 &span : spans) each_cell(span, [&](std::size_t cell) { ++start_[cell + 1]; });
   for (std::size_t cell = 0; cell + 1 < start_.size(); ++cell) start_[cell + 1] += start_[cell];
   items_.resize(start_.back());
   std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
   for (std::size_t f = 0; f < faces_.size(); ++f) {
-    each_cell(faces_[f], [&](std::size_t cell) { items_[next[cell]++] = f; });
+    each_cell(spans[f], [&](std::size_t cell) { items_[next[cell]++] = f; });
   }
   stamp_.assign(faces_.size(), 0);
 }
 
 int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
-  const float side = std::max(high_[axis] - low_[axis], 1e-12f) / kGrid;
-  const float cell = std::floor((ndc - low_[axis]) / side);
+  const float cell = std::floor((ndc - low_[axis]) / cell_side_[axis]);
   return static_cast<int>(std::clamp(cell, 0.0f, static_cast<float>(kGrid - 1)));
 }
 
@@ -106,8 +114,10 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
   }
   ++query_;
   std::vector<PolygonCorner> &part = part_, &scratch = scratch_;
-  for (int y = cell_of(low.y, 1); y <= cell_of(high.y, 1); ++y) {
-    for (int x = cell_of(low.x, 0); x <= cell_of(high.x, 0); ++x) {
+  const int x0 = cell_of(low.x, 0), x1 = cell_of(high.x, 0);
+  const int y0 = cell_of(low.y, 1), y1 = cell_of(high.y, 1);
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
       const auto cell = static_cast<std::size_t>(y * kGrid + x);
       for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k) {
         const std::size_t f = items_[k];
@@ -137,12 +147,39 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
   return false;
 }
 
+bool CasterSurfaceFromLight::may_shadow_triangle(const SceneObject &receiver, std::size_t triangle,
+                                                 const glm::vec4 (&corners)[3]) const {
+  auto known = std::find_if(answers_.begin(), answers_.end(),
+                            [&](const auto &entry) { return entry.first == &receiver; });
+  if (known == answers_.end()) {
+    answers_.emplace_back(&receiver, std::vector<signed char>(receiver.mesh.triangles.size(), -1));
+    known = answers_.end() - 1;
+  }
+  signed char &answer = known->second[triangle];
+  if (answer < 0) answer = may_shadow(corners, 3) ? 1 : 0;
+  return answer != 0;
+}
+
 const CasterSurfaceFromLight &CasterSurfacesFromLight::at(const glm::mat4 &light_clip) {
   for (const auto &[matrix, surface] : built_) {
     if (std::memcmp(&matrix, &light_clip, sizeof matrix) == 0) return *surface;
   }
   built_.emplace_back(light_clip, std::make_unique<CasterSurfaceFromLight>(caster_, light_clip));
   return *built_.back().second;
+}
+
+const CasterSurfaceFromLight &CasterSurfacesFromLight::receiver_at(const SceneObject &receiver,
+                                                                   const glm::mat4 &light_clip) {
+  for (const ReceiverSurface &built : receivers_) {
+    if (built.receiver == &receiver &&
+        std::memcmp(&built.light_clip, &light_clip, sizeof light_clip) == 0) {
+      return *built.surface;
+    }
+  }
+  receivers_.push_back({&receiver, light_clip,
+                        std::make_unique<CasterSurfaceFromLight>(receiver.mesh, receiver.model_to_world,
+                                                                 light_clip)});
+  return *receivers_.back().surface;
 }
 
 }  // namespace gs

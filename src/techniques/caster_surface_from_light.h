@@ -36,6 +36,12 @@ class CasterSurfaceFromLight {
   // kTouch of its depth: a post's foot on the table top). True when unsure (a corner at or
   // behind the light's plane, or the caster reaching there).
   bool may_shadow(const glm::vec4 *light_clip, std::size_t count) const;
+  // may_shadow of the triangle `triangle` (an index into `receiver`'s mesh) whose light clip
+  // corners are `corners` (this matrix times the receiver's world vertices this frame: the same
+  // at every call for that triangle), answered once and then remembered: the caster's textures
+  // that share this surface (a receiver's two depth bands) ask about the same triangles.
+  bool may_shadow_triangle(const SceneObject &receiver, std::size_t triangle,
+                           const glm::vec4 (&corners)[3]) const;
 
  // A corner of a receiver polygon as may_shadow clips it (light NDC).
   struct PolygonCorner {
@@ -56,26 +62,41 @@ class CasterSurfaceFromLight {
   bool usable_ = true;
   std::vector<Face> faces_;
   glm::vec2 low_{INFINITY}, high_{-INFINITY};  // NDC box of all faces
+  glm::vec2 cell_side_{1.0f};                  // NDC: a grid cell's width and height
   std::vector<std::size_t> start_, items_;     // per cell its faces: items_[start_[c]..start_[c+1])
   mutable std::vector<std::size_t> stamp_;     // per face, the query that last tested it
   mutable std::size_t query_ = 0;
   // may_shadow's polygons, kept so that a query (one per receiver triangle) allocates nothing.
   mutable std::vector<PolygonCorner> polygon_, part_, scratch_;
+  // may_shadow_triangle's answers per receiver and triangle: -1 not asked yet, else 0 or 1.
+  mutable std::vector<std::pair<const SceneObject *, std::vector<signed char>>> answers_;
 };
 
 // One caster's surfaces for the light clip matrices of its textures, each built once: the
 // plain and masked textures of a light view part share the matrix (the mask changes only what
-// step 1 draws), so step 3 of each reuses the same grid instead of building it again.
+// step 1 draws), so step 3 of each reuses the same grid instead of building it again. The same
+// for the receivers' own drawn surfaces that step 3 tests a receiver's triangles against: the
+// caster's two depth-band textures of a light view (one per band, the same matrix) share them.
+// Meant for one frame: the scene's objects must not change while it is in use.
 class CasterSurfacesFromLight {
  public:
   explicit CasterSurfacesFromLight(const SceneObject &caster) : caster_(caster) {}
   // The surface for `light_clip` (world to light clip), built at the first call with a matrix
   // of the same bytes.
   const CasterSurfaceFromLight &at(const glm::mat4 &light_clip);
+  // `receiver`'s own drawn surface (its `mesh`, placed by its model_to_world, both sides) for
+  // `light_clip`, built at the first call for that object with a matrix of the same bytes.
+  const CasterSurfaceFromLight &receiver_at(const SceneObject &receiver, const glm::mat4 &light_clip);
 
  private:
+  struct ReceiverSurface {
+    const SceneObject *receiver;
+    glm::mat4 light_clip;  // world to light clip
+    std::unique_ptr<CasterSurfaceFromLight> surface;
+  };
   const SceneObject &caster_;
   std::vector<std::pair<glm::mat4, std::unique_ptr<CasterSurfaceFromLight>>> built_;
+  std::vector<ReceiverSurface> receivers_;
 };
 
 }  // namespace gs

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -232,7 +231,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   }
   SegmentGrid segment_grid(static_cast<float>(view.size), std::move(segment_boxes));
   CasterSurfacesFromLight own(scene.objects[caster]);
-  const CasterSurfaceFromLight &caster_surface = (surfaces ? *surfaces : own).at(light_clip);
+  CasterSurfacesFromLight &built = surfaces ? *surfaces : own;
+  const CasterSurfaceFromLight &caster_surface = built.at(light_clip);
   std::vector<std::size_t> candidates;
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   std::vector<DrawnPiece> drawn_pieces;
@@ -281,10 +281,11 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     const float side = static_cast<float>(band);  // -1: keep -z <= back; +1: keep -z >= back
     band_planes = view_planes;
     band_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
-    // The receiver's own surface (light clip), made at its first triangle across the band's
-    // plane: one that no part of the receiver hides from the light is its surface the mask
-    // drew, where the masked texture is exact, so it takes that texture whole and is not cut.
-    std::optional<CasterSurfaceFromLight> own_surface;
+    // The receiver's own surface (light clip), taken at its first triangle across the band's
+    // plane (built once per receiver and matrix, shared by both bands' textures): one that no
+    // part of the receiver hides from the light is its surface the mask drew, where the masked
+    // texture is exact, so it takes that texture whole and is not cut.
+    const CasterSurfaceFromLight *own_surface = nullptr;
     const std::size_t n = receiver.world.size();
     std::vector<glm::vec4> lc(n);  // light clip
     std::vector<unsigned> flags(n);
@@ -296,7 +297,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
       if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
     }
-    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    const std::vector<glm::uvec3> &triangles = receiver.object->mesh.triangles;
+    for (const glm::uvec3 &t : triangles) {
+      const auto number = static_cast<std::size_t>(&t - triangles.data());  // in the mesh
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
       // Listing 2: skip triangles facing away from the light and those wholly outside its view.
       const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
@@ -304,11 +307,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x5F) != 0) continue;
       unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
       if ((any_outside & 0x40) != 0) {  // across the band's plane
-        if (!own_surface) {
-          own_surface.emplace(receiver.object->mesh, receiver.object->model_to_world, light_clip);
-        }
+        if (!own_surface) own_surface = &built.receiver_at(*receiver.object, light_clip);
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        if (!own_surface->may_shadow(corners, 3)) {
+        if (!own_surface->may_shadow_triangle(*receiver.object, number, corners)) {
           if (band > 0) continue;  // the masked texture's, whole
           any_outside &= ~0x40u;
         }
@@ -325,7 +326,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // Wholly nearer the light than the caster's surface behind it: never in its shadow. An
       // exact triangle stays in the list, as Listing 2 flags it, but step 5 does not draw it.
       const glm::vec4 light_corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-      const bool may_shadow = caster_surface.may_shadow(light_corners, 3);
+      const bool may_shadow = caster_surface.may_shadow_triangle(*receiver.object, number, light_corners);
       const bool exact = !needs_clip &&
                          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0;
       if (!may_shadow && !exact) continue;
