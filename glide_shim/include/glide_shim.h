@@ -92,6 +92,12 @@ GLIDESHIM_API FxBool glideShimSetWindowSize(int width, int height);
 GLIDESHIM_API FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod);
 GLIDESHIM_API void glideShimRenderToFrameBuffer(void);
 
+/* Hands every pending Glide primitive to the renderer and starts it drawing (glFlush) without
+ * waiting for it, so that the renderer works while the program goes on: llvmpipe rasterises on
+ * its own threads from a flush, where a later read (grLfbReadRegion) or grSstIdle would only
+ * start it and then wait. Changes no state and no pixel; harmless with nothing pending. */
+GLIDESHIM_API void glideShimFlush(void);
+
 /* Plain OpenGL between Glide calls, for techniques Glide never had (depth maps, stencil volumes).
  * glideShimBeginGL draws every pending Glide primitive, saves the GL state, and leaves current:
  *   - the framebuffer holding Glide's render buffer (colour attachment drawn to) and its

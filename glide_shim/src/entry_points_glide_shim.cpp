@@ -16,6 +16,7 @@ FxBool glideShimWindowClosed(void);
 FxBool glideShimSetWindowSize(int width, int height);
 FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod);
 void glideShimRenderToFrameBuffer(void);
+void glideShimFlush(void);
 FxBool glideShimBeginGL(void);
 void glideShimEndGL(void);
 void *glideShimGetProcAddress(const char *name);
@@ -64,6 +65,10 @@ FxBool glideShimRenderToTexture(GrChipID_t tmu, FxU32 startAddress, GrLOD_t lod)
 
 void glideShimRenderToFrameBuffer(void) {
   glide_shim::guarded("glideShimRenderToFrameBuffer", [&] { glide_shim_api::glideShimRenderToFrameBuffer(); });
+}
+
+void glideShimFlush(void) {
+  glide_shim::guarded("glideShimFlush", [&] { glide_shim_api::glideShimFlush(); });
 }
 
 FxBool glideShimBeginGL(void) {

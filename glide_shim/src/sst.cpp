@@ -177,6 +177,13 @@ void grSstIdle(void) {
   ctx.renderer->gl().glFinish();
 }
 
+void glideShimFlush(void) {
+  auto &ctx = current();
+  if (!ctx.require_open("glideShimFlush")) return;
+  ctx.flush();
+  ctx.renderer->gl().glFlush();
+}
+
 FxU32 grSstScreenWidth(void) {
   auto &ctx = current();
   if (!ctx.require_open("grSstScreenWidth")) return 0;

@@ -54,6 +54,36 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   std::optional<float> largest_edge_error;
   if (std::isinf(options.largest_texel_footprint_px)) largest_edge_error = INFINITY;
   float edge_error_taken = 0.0f;  // by the shadows cast so far
+  // Step 2 of the texture step 1 drew last on the LFB path, whose drawing the renderer was left
+  // to do (glideShimFlush) while the program goes on with the next texture's steps 1 and 3 and
+  // the next caster's fitting: the read-back then waits only for what is left of it. Done before
+  // anything else draws (the next step 1, which clears the same corner of the back buffer, and
+  // step 4). A texture of a caster refused meanwhile is read only while its jobs are still at
+  // hand (no other caster has begun since), and then for nothing: no pass draws with it.
+  struct PendingRead {
+    std::size_t id;              // the texture's (ShadowTexture::id)
+    std::optional<FxU32> placed;  // its TMU address, when step 2 placed it
+  };
+  std::optional<PendingRead> pending;
+  std::vector<ShadowJob> caster_jobs;  // the caster's textures (below)
+  auto read_pending = [&] {
+    if (!pending) return;
+    const std::size_t id = pending->id;
+    auto has_id = [id](const ShadowJob &job) { return job.texture.id == id; };
+    ShadowJob *job = nullptr;
+    for (std::vector<ShadowJob> *jobs : {&result.jobs, &caster_jobs}) {
+      const auto found = std::find_if(jobs->begin(), jobs->end(), has_id);
+      if (!job && found != jobs->end()) job = &*found;
+    }
+    if (job) {
+      const auto step_start = Clock::now();
+      job->texture = pending->placed ? make_shadow_texture(job->view, options, *pending->placed)  // 2
+                                     : read_shadow_texture(job->view, options);
+      job->texture.id = id;
+      finish_step(1, step_start);
+    }
+    pending.reset();
+  };
   auto add_note = [&](const LightView &view) {  // once per frame
     if (!view.note.empty() &&
         std::find(result.warnings.begin(), result.warnings.end(), view.note) == result.warnings.end()) {
@@ -75,7 +105,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // This caster's textures (a map above 256 is several, and one more per planar receiver it
       // reaches through); kept only if every one's texels are fine enough for the screen where
       // the shadow falls.
-      std::vector<ShadowJob> caster_jobs;
+      caster_jobs.clear();
       const FxU32 caster_mark = result.textures.mark();
       // The caster's textures for the receivers marked in `receivers`; for a `pierced` one,
       // clipped to the light's side of its plane (world) or masked by its surface.
@@ -151,10 +181,13 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           // A texture left unplaced is drawn on the direct path only when step 5 loads it.
           const std::size_t id = texture_ids++;
           const std::optional<FxU32> placed = result.textures.place(id, bytes);
+          const bool drawn_now = placed || !job.view.direct_path;
+          if (drawn_now) read_pending();
           step_start = Clock::now();
           if (job.view.direct_path) grGlideGetState(&job.step1_state);
-          if (placed || !job.view.direct_path) {
+          if (drawn_now) {
             draw_caster_from_light(scene, job.view, placed.value_or(0), masked, draw);  // 1
+            if (!job.view.direct_path) glideShimFlush();
           }
           finish_step(0, step_start);
           if (!job.view.usable) {
@@ -163,10 +196,14 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             continue;
           }
           add_note(job.view);
-          step_start = Clock::now();
-          job.texture = placed ? make_shadow_texture(job.view, options, *placed)  // 2
-                               : read_shadow_texture(job.view, options);
-          finish_step(1, step_start);
+          if (job.view.direct_path) {
+            step_start = Clock::now();
+            job.texture = placed ? make_shadow_texture(job.view, options, *placed)  // 2
+                                 : read_shadow_texture(job.view, options);
+            finish_step(1, step_start);
+          } else {
+            pending = PendingRead{id, placed};  // 2, read_pending
+          }
           job.texture.id = id;
           if (job.view.direct_path) {
             job.draw = std::move(draw);
@@ -265,6 +302,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       }
       edge_error_taken += edge_error.pixels[0];
       for (ShadowJob &job : caster_jobs) result.jobs.push_back(std::move(job));
+      caster_jobs.clear();  // what is left of them is not a texture to read (read_pending)
     }
   }
   // What TMU memory holds as step 5 goes: step 2's textures, but for the slide textures' memory
@@ -275,9 +313,12 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       memory.forget(kProjectiveTextureAddress, kProjectiveTextureAddress + kProjectiveTextureBytes);
     }
   };
+  read_pending();
   auto start = Clock::now();
   render_scene(scene, frame);  // 4
   scene_pass_done();
+  // The renderer draws step 4 while the program sets up step 5's passes (shadow_pass.cpp).
+  if (!result.jobs.empty()) glideShimFlush();
   finish_step(3, start);
   start = Clock::now();
   const BindShadowTexture bind = [&](const ShadowJob &job) {

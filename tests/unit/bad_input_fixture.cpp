@@ -217,6 +217,7 @@ std::vector<BadCall> BadInputTest::calls_needing_a_window() {
       {"grSstOrigin", [] { grSstOrigin(GR_ORIGIN_LOWER_LEFT); }},
       {"grHints", [] { grHints(GR_HINT_STWHINT, GR_STWHINT_W_DIFF_TMU0); }},
       {"grSstIdle", [] { grSstIdle(); }},
+      {"glideShimFlush", [] { glideShimFlush(); }},
       {"glideShimWritePng",
        [] {
          const std::string path = ::testing::TempDir() + "bad_input_never_written.png";

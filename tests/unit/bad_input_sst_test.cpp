@@ -1,6 +1,7 @@
 // Bad input, chapter "SST routines": every call that needs the library and a window is
 // NOT_INITIALIZED before grGlideInit, before grSstWinOpen and after grSstWinClose; unknown
-// grSstWinOpen enums; out-of-range numbers (gamma, LOD bias, swap interval, board, window size).
+// grSstWinOpen enums; glideShimFlush drawing what is queued; out-of-range numbers (gamma, LOD bias,
+// swap interval, board, window size).
 #include "bad_input_fixture.h"
 
 #include <string>
@@ -69,6 +70,19 @@ TEST_F(BadInputTest, UnknownWinOpenEnumsAreInvalidEnum) {
   expect_rejected(GLIDESHIM_ERR_INCONSISTENT,
                   {"grSstWinOpen", open(GR_RESOLUTION_NONE, GR_COLORFORMAT_ARGB, GR_ORIGIN_UPPER_LEFT)},
                   "already open");
+}
+
+// ---- glideShimFlush ----------------------------------------------------------------------------
+
+// It hands the queued triangle to GL without waiting: no error, no state changed, and the pixel
+// read afterwards is the triangle's, as without it; with nothing queued it does nothing.
+TEST_F(BadInputTest, GlideShimFlushDrawsWhatIsQueuedAndChangesNoState) {
+  const Snapshot before = capture();
+  expect_drawn({"glideShimFlush", [] { grDrawTriangle(&kA, &kB, &kC), glideShimFlush(); }}, 0xFFFF,
+               "a queued triangle");
+  glideShimFlush();
+  expect_no_error_reported();
+  expect_same_state(before, capture());
 }
 
 // ---- out-of-range numbers ----------------------------------------------------------------------

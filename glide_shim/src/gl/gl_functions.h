@@ -17,7 +17,7 @@ namespace glide_shim {
   X(glViewport) X(glScissor) X(glEnable) \
   X(glDisable) X(glClear) X(glClearColor) X(glClearDepth) X(glClearStencil) X(glColorMask) \
   X(glDepthMask) X(glDepthFunc) X(glBlendFunc) X(glReadPixels) X(glDrawPixels) \
-  X(glPixelStorei) X(glWindowPos2i) X(glFinish) X(glGenTextures) \
+  X(glPixelStorei) X(glWindowPos2i) X(glFinish) X(glFlush) X(glGenTextures) \
   X(glDeleteTextures) X(glBindTexture) X(glTexImage2D) X(glTexSubImage2D) X(glTexParameteri) \
   X(glActiveTexture) X(glGenFramebuffers) X(glDeleteFramebuffers) X(glBindFramebuffer) \
   X(glFramebufferRenderbuffer) X(glCheckFramebufferStatus) X(glGenRenderbuffers) \
