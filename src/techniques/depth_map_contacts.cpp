@@ -73,21 +73,28 @@ class MapReplay {
         pushed ? facet_pushed_positions(mesh, frustum, light_, side_) : mesh.position;
     DrawnSurface surface;
     for (const glm::uvec3 &t : mesh.object->mesh.triangles) {
-      dvec3 window[3];
-      bool ahead = true;
+      glm::dvec4 corner[3];  // S, T (texels), r, q of each corner, scaled to unit size
       for (int k = 0; k < 3; ++k) {
         surface.pushed.push_back(dvec3(drawn[t[k]]));
         surface.original.push_back(dvec3(mesh.position[t[k]]));
         const glm::dvec4 m = to_map_ * glm::dvec4(surface.pushed.back(), 1.0);
-        ahead = ahead && m.w > 0.0;
-        window[k] = dvec3(m.x / m.w * side_, m.y / m.w * side_, m.z / m.w);
+        const glm::dvec4 h(m.x * side_, m.y * side_, m.z, m.w);
+        const double scale = std::max({std::abs(h.x), std::abs(h.y), std::abs(h.w), 1e-30});
+        corner[k] = h / scale;
       }
-      // The window-space plane's gradient; edge-on (or reaching behind the light) it has none
-      // that GL could use, and the bounded copy decides.
-      const dvec3 n = glm::cross(window[1] - window[0], window[2] - window[0]);
+      // The window-space plane r/q = gx s/q + gy t/q + z0 through the homogeneous corners (r =
+      // gx S + gy T + z0 q at each, Cramer's rule), as GL takes it from the part it keeps; edge-on
+      // (a zero determinant) it has none, and the bounded copy decides.
+      auto det3 = [](const dvec3 &a, const dvec3 &b, const dvec3 &c) {
+        return glm::dot(a, glm::cross(b, c));
+      };
+      const dvec3 s(corner[0].x, corner[1].x, corner[2].x), tt(corner[0].y, corner[1].y, corner[2].y);
+      const dvec3 q(corner[0].w, corner[1].w, corner[2].w), r(corner[0].z, corner[1].z, corner[2].z);
+      const double det = det3(s, tt, q);
       double term = INFINITY;
-      if (ahead && std::abs(n.z) > 1e-300) {
-        term = options_.depth_bias_slope * std::max(std::abs(n.x / n.z), std::abs(n.y / n.z));
+      if (std::abs(det) > 1e-12) {
+        const double gx = det3(r, tt, q) / det, gy = det3(s, r, q) / det;
+        term = options_.depth_bias_slope * std::max(std::abs(gx), std::abs(gy));
       }
       surface.slope_term.push_back(term);
     }
