@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace gs::depth_map {
@@ -194,12 +195,50 @@ bool plane_cut(const dvec3 &a, const dvec3 &b, const dvec3 &c, const dvec3 &orig
   return glm::length(q - p) > touching;
 }
 
+// An object's triangles (world, three corners each) and their box, for rays along segments.
+struct RayBody {
+  std::vector<dvec3> corners;
+  dvec3 low{INFINITY}, high{-INFINITY};
+  bool casts = false;
+};
+
+// Whether the segment o .. o + d (its far end left out: the point it reaches) meets the body.
+bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
+  double from = 0.0, to = 1.0;  // the segment clipped to the box (slabs)
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-300) {
+      if (o[k] < body.low[k] || o[k] > body.high[k]) return false;
+      continue;
+    }
+    double near = (body.low[k] - o[k]) / d[k], far = (body.high[k] - o[k]) / d[k];
+    if (near > far) std::swap(near, far);
+    from = std::max(from, near), to = std::min(to, far);
+    if (from > to) return false;
+  }
+  double t = 1.0 - 1e-5;
+  std::size_t hit = 0;
+  return nearest_hit(o, d, body.corners, 1e-9, t, hit);
+}
+
 }  // namespace
 
 std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                          const LightFrustum &frustum, const SpotLight &light,
                                          int side, const TechniqueOptions &options) {
   std::vector<ContactError> result(scene.objects.size());
+  // Every object for the rays: what hides a receiver point from the camera, and what else
+  // shadows it (another caster, or the receiver itself: its own shadow is left out of the count).
+  std::vector<RayBody> bodies(meshes.size());
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    bodies[m].casts = meshes[m].object->casts_shadow;
+    for (const glm::uvec3 &u : meshes[m].object->mesh.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        const dvec3 p(meshes[m].position[u[k]]);
+        bodies[m].corners.push_back(p);
+        bodies[m].low = glm::min(bodies[m].low, p), bodies[m].high = glm::max(bodies[m].high, p);
+      }
+    }
+  }
   FootprintSpace space;  // for the screen positions
   space.camera_clip = camera_projection(scene.camera, scene.width, scene.height) *
                       camera_view(scene.camera);
@@ -227,15 +266,13 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
   for (const WorldMesh &caster : meshes) {
     if (!caster.object->casts_shadow) continue;
     const std::size_t caster_index = static_cast<std::size_t>(caster.object - scene.objects.data());
+    const std::size_t caster_at = static_cast<std::size_t>(&caster - meshes.data());
     glm::vec3 caster_low, caster_high;
     box_of(caster.position, caster_low, caster_high);
-    std::vector<dvec3> caster_corners;  // world, three a triangle: what the rays meet
-    for (const glm::uvec3 &u : caster.object->mesh.triangles) {
-      for (int k = 0; k < 3; ++k) caster_corners.push_back(dvec3(caster.position[u[k]]));
-    }
     float most = 0.0f;  // the largest estimate on one receiver so far
     for (const WorldMesh &receiver : meshes) {
       if (!receiver.object->receives_shadow || &receiver == &caster) continue;
+      const std::size_t receiver_at = static_cast<std::size_t>(&receiver - meshes.data());
       samples.clear();
       for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
         const glm::vec3 &a = receiver.position[t.x], &b = receiver.position[t.y], &c = receiver.position[t.z];
@@ -328,7 +365,7 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
             if (!(texels_per_metre > 0.0)) continue;
             // Walked a quarter texel at a time for two texels, then half a texel to eight.
             double farthest = 0.0;  // texels: where the last wrong point lies
-            bool wrong_seen = false;
+            bool wrong_seen = false, wrong_truth = false, ends_at_edge = false;
             for (int step = 1; step <= 20; ++step) {
               const double at = step <= 8 ? 0.25 * step : 2.0 + 0.5 * (step - 8);  // texels
               const dvec3 point = sample.point + direction * (at / texels_per_metre);
@@ -341,32 +378,41 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
               const glm::dvec4 seen = camera_clip * glm::dvec4(point, 1.0);
               if (!(seen.w > 0.0) || std::abs(seen.x) > seen.w || std::abs(seen.y) > seen.w) break;
               // Counted where the camera sees it past the caster and the light shines on it.
-              double t = 1.0 - 1e-6;
-              std::size_t hit = 0;
-              const bool visible = glm::dot(sample.normal, camera - point) > 0.0 &&
-                                   !nearest_hit(camera, point - camera, caster_corners, 1e-9, t, hit);
+              bool visible = glm::dot(sample.normal, camera - point) > 0.0;
+              for (std::size_t m = 0; m < bodies.size() && visible; ++m) {
+                visible = !blocks(bodies[m], camera, point - camera);
+              }
+              // Where another caster or the receiver itself shadows it too, neither the truth
+              // nor the map turns on this caster alone.
+              bool alone = true;
+              for (std::size_t m = 0; m < bodies.size() && alone && visible; ++m) {
+                if (m == caster_at || !(bodies[m].casts || m == receiver_at)) continue;
+                alone = !blocks(bodies[m], light_position, point - light_position);
+              }
               glm::dvec2 texels;
               double depth;
-              bool wrong = false;
-              if (visible && inside_planes(beam.inner, glm::vec3(point)) &&
+              bool wrong = false, truth = wrong_truth;
+              if (visible && alone && inside_planes(beam.inner, glm::vec3(point)) &&
                   replay.in_map(point, texels, depth)) {
-                t = 1.0 - 1e-6;
-                const bool truth = nearest_hit(light_position, point - light_position,
-                                               caster_corners, 1e-9, t, hit);
+                truth = blocks(bodies[caster_at], light_position, point - light_position);
                 wrong = truth != replay.shadowed(texels, depth - lowered);
               }
               if (wrong) {
                 farthest = at + (step <= 8 ? 0.125 : 0.25);
-                wrong_seen = true;
+                wrong_seen = true, wrong_truth = truth;
               } else if (wrong_seen || at >= 1.0) {
-                break;  // past the run of wrong points beside the foot, or none began there
+                // Past the run of wrong points beside the foot, or none began there. A run that
+                // ends at a true edge (the truth turns) is that edge's band there too.
+                ends_at_edge = wrong_seen && truth != wrong_truth;
+                break;
               }
             }
             if (!wrong_seen) continue;
             const dvec3 reach = sample.point + direction * (farthest / texels_per_metre);
             const double extent =
                 glm::length(glm::dvec2(footprint_screen_pixels(space, glm::vec3(reach))) - foot_screen);
-            pixels += std::max(extent - sample.excused, 0.0) * sample.screen_length;
+            const double band = ends_at_edge ? 2.0 * sample.excused : sample.excused;
+            pixels += std::max(extent - band, 0.0) * sample.screen_length;
           }
         }
         estimate.pixels[size] = static_cast<float>(pixels);
