@@ -305,10 +305,12 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
           const double length = glm::length(glm::dvec2(screen));
           if (!(length > 1e-3)) continue;
           // A pixel next to the foot's edge on screen is excused (shadow_edge_error.cpp) where
-          // the caster's own pixels count: they make the edge a visible one.
+          // the caster's own pixels count: they make the edge a visible one. Where they do not,
+          // the receiver's pixels whose centres lie within half a pixel of the foot may be the
+          // caster's all the same (the rasterizer rounds its outline), so no less is excused.
           const glm::dvec2 across = glm::abs(glm::dvec2(screen.y, -screen.x)) / length;
           const double excused =
-              caster.object->receives_shadow ? std::max(across.x, across.y) + across.x + across.y : 0.0;
+              caster.object->receives_shadow ? std::max(across.x, across.y) + across.x + across.y : 0.5;
           // About two samples a texel of the map at its largest size, at most 16.
           glm::dvec2 ts, te;
           double ds, de;
