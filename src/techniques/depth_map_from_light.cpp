@@ -4,6 +4,7 @@
 // (GL convention); the map's texels (side x side, depth 0..1 from near to far plane).
 #include "techniques/depth_map_passes.h"
 
+#include "techniques/depth_map_contacts.h"
 #include "techniques/depth_map_facets.h"
 #include "techniques/depth_map_footprint.h"
 #include "techniques/light_beam.h"
@@ -176,8 +177,19 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
     // screen there) is left out of this light's map, by name, as the projected techniques leave
     // out their texture.
     std::vector<bool> drawn(scene_.objects.size(), true);
-    for (const CasterFootprint &footprint :
+    // The error beside the lines where casters meet receivers, which no silhouette edge throws
+    // (depth_map_contacts.h), joins the error along the shadows' edges.
+    const std::vector<ContactError> contacts =
+        std::isinf(options_.depth_map_largest_footprint_px)
+            ? std::vector<ContactError>(scene_.objects.size())
+            : contact_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
+    for (CasterFootprint &footprint :
          caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup)) {
+      const ContactError &contact = contacts[footprint.caster];
+      if (contact.pixels.pixels[0] > footprint.edge_error.pixels[0]) {
+        footprint.edge_error_receiver = contact.receiver;
+      }
+      footprint.edge_error.add(contact.pixels);
       const float pixels = footprint.coarsest.pixels_per_texel;
       texel_footprint_px_ = std::max(texel_footprint_px_, pixels);
       if (pixels > largest_footprint) {
