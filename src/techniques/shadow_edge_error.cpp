@@ -298,15 +298,38 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
   return std::min(pixels, width * height);
 }
 
+AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,
+                                    float largest_footprint, const EdgeErrorEstimate &within_budget,
+                                    const std::optional<float> &largest_edge_pixels) {
+  AcceptedSize accepted;
+  for (int doubling = 0, tried = size; tried <= largest_size; ++doubling, tried *= 2) {
+    accepted.largest_tried = tried;
+    const bool footprint_fits =
+        footprint * static_cast<float>(size) / static_cast<float>(tried) <= largest_footprint;
+    // Past the sizes estimated, the largest one's error halves with each doubling: a shadow
+    // edge strays by a share of a texel's width.
+    const int estimated = std::min(doubling, EdgeErrorEstimate::kSizes - 1);
+    const bool edges_fit =
+        !largest_edge_pixels ||
+        std::ldexp(within_budget.pixels[estimated], estimated - doubling) <= *largest_edge_pixels;
+    if (footprint_fits && edges_fit) {
+      accepted.size = tried;
+      break;
+    }
+  }
+  return accepted;
+}
+
+std::string accepted_size_words(const AcceptedSize &accepted) {
+  return accepted.size ? "size " + std::to_string(accepted.size) + " would be accepted"
+                       : "no size up to " + std::to_string(accepted.largest_tried) +
+                             " would be accepted";
+}
+
 std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
-                                      int size, int largest_size) {
-  int accepted = size, doubling = 0;
-  while (accepted <= largest_size &&
-         (doubling >= EdgeErrorEstimate::kSizes || frame.pixels[doubling] > largest_pixels)) {
-    accepted *= 2, ++doubling;
-  }
+                                      int size, const AcceptedSize &accepted) {
   char pixels[200];
   std::snprintf(pixels, sizeof pixels,
                 "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
@@ -316,10 +339,7 @@ std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
-         "-texel shadow is too coarse for the screen (" +
-         (accepted <= largest_size
-              ? "size " + std::to_string(accepted) + " would be accepted"
-              : "no size up to " + std::to_string(largest_size) + " would be accepted") +
+         "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
          "); it casts no shadow from this light";
 }
 

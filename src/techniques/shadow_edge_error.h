@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -92,13 +93,30 @@ inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &
 void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
                    const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments);
 
-// The refusal of a shadow whose edges would stray too far (the projected techniques'), naming
-// the light, the caster, the receiver with the most of the error, the estimate (`frame`: the
-// frame's with this shadow's, `taken` of it by the shadows before) against the most accepted
-// (pixels), and the smallest size up to `largest_size` that would be accepted.
+// The smallest shadow size from `size` up to `largest_size`, doubling, at which a caster's
+// shadow would be accepted: its coarsest texel footprint (`footprint` screen pixels at `size`,
+// halving as the size doubles) at most `largest_footprint`, and, when `largest_edge_pixels` is
+// set, the frame's edge error with it (`within_budget`) at most that. The edge error is
+// estimated up to 8 times `size`; past that, it is extrapolated from there, halving with each
+// doubling as the texels' width does (a guess: rendering at the size named may be refused again).
+struct AcceptedSize {
+  int size = 0;          // 0: none of the sizes tried
+  int largest_tried = 0;
+};
+AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,
+                                    float largest_footprint, const EdgeErrorEstimate &within_budget,
+                                    const std::optional<float> &largest_edge_pixels);
+
+// "size N would be accepted", or "no size up to M would be accepted": how refusals end.
+std::string accepted_size_words(const AcceptedSize &accepted);
+
+// The refusal of a shadow whose edges would stray too far (the projected techniques' and the
+// depth map's), naming the light, the caster, the receiver with the most of the error, the
+// estimate (`frame`: the frame's with this shadow's, `taken` of it by the shadows before)
+// against the most accepted (pixels), and the size that would be accepted.
 std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
-                                      int size, int largest_size);
+                                      int size, const AcceptedSize &accepted);
 
 }  // namespace gs
