@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -103,11 +105,11 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   return grid;
 }
 
-// The receiver's outline from the light: the edges (world) of its light-facing triangles that
-// no other light-facing triangle shares (by position), sorted, so that a lookup is a search; and
-// those triangles' corners in the light's screen (texels), to find what lies beyond an edge.
+// The receiver's outline from the light: the edges of its light-facing triangles that no other
+// light-facing triangle shares (by world position), as pairs of position ids, sorted, so that a
+// lookup is a search; and those triangles' corners in the light's screen (texels), to find what
+// lies beyond an edge.
 struct Outline {
-  using Edge = std::pair<glm::vec3, glm::vec3>;
   struct Lit {
     glm::vec3 corner[3];  // world
     glm::vec2 screen[3];  // light screen, texels
@@ -117,23 +119,18 @@ struct Outline {
   // Light screen texels: within this of the view, float rounding in a separating-axis test
   // is below 1e-3 texel.
   static constexpr float kNear = 1e4f;
-  std::vector<Edge> edges;
+  // Per vertex of the receiver, an id equal to another vertex's exactly where their world
+  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids.
+  std::vector<std::uint32_t> position_id;
+  std::vector<std::uint64_t> edges;  // (lower id << 32 | higher id), sorted
   std::vector<Lit> lit;
-  static bool less(const glm::vec3 &p, const glm::vec3 &q) {
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  std::uint64_t key(unsigned p, unsigned q) const {
+    const std::uint64_t a = position_id[p], b = position_id[q];
+    return a < b ? a << 32 | b : b << 32 | a;
   }
-  static Edge key(const glm::vec3 &p, const glm::vec3 &q) {
-    return less(p, q) ? Edge(p, q) : Edge(q, p);
-  }
-  // A function object, not a function: the sort and the searches call it inline.
-  struct EdgeLess {
-    bool operator()(const Edge &a, const Edge &b) const {
-      return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
-    }
-  };
-  static constexpr EdgeLess edge_less{};
-  bool contains(const glm::vec3 &p, const glm::vec3 &q) const {
-    return std::binary_search(edges.begin(), edges.end(), key(p, q), edge_less);
+  // Whether the edge between vertices p and q of the receiver lies on the outline.
+  bool contains(unsigned p, unsigned q) const {
+    return std::binary_search(edges.begin(), edges.end(), key(p, q));
   }
   // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
   // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
@@ -170,16 +167,37 @@ struct Outline {
   }
 };
 
+// Ids for the positions of `world` (world space), equal where the positions compare equal as
+// floats, infinities too (the outline's edges always joined so; position_ids in
+// caster_from_light.cpp gives a non-finite model position an id of its own), counted up in the
+// positions' lexicographic order.
+std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world) {
+  auto less = [](const glm::vec3 &p, const glm::vec3 &q) {
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  };
+  std::vector<std::uint32_t> order(world.size()), id(world.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return less(world[a], world[b]); });
+  std::uint32_t next = 0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k > 0 && less(world[order[k - 1]], world[order[k]])) ++next;
+    id[order[k]] = next;
+  }
+  return id;
+}
+
 Outline outline_of(const LightView &view, const ProjectedObject &receiver,
                    const std::vector<glm::vec4> &clip) {
-  std::vector<Outline::Edge> all;
   Outline outline;
+  outline.position_id = world_position_ids(receiver.world);
+  std::vector<std::uint64_t> all;
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
     if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;
-    all.push_back(Outline::key(a, b));
-    all.push_back(Outline::key(b, c));
-    all.push_back(Outline::key(c, a));
+    all.push_back(outline.key(t.x, t.y));
+    all.push_back(outline.key(t.y, t.z));
+    all.push_back(outline.key(t.z, t.x));
     Outline::Lit lit{{a, b, c}, {}, true, glm::vec2(INFINITY), glm::vec2(-INFINITY)};
     bool near = true;
     int k = 0;
@@ -194,10 +212,10 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
     if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
     outline.lit.push_back(lit);
   }
-  std::sort(all.begin(), all.end(), Outline::edge_less);
+  std::sort(all.begin(), all.end());
   for (std::size_t i = 0; i < all.size();) {
     std::size_t j = i + 1;
-    while (j < all.size() && !Outline::edge_less(all[i], all[j])) ++j;
+    while (j < all.size() && all[j] == all[i]) ++j;
     if (j == i + 1) outline.edges.push_back(all[i]);
     i = j;
   }
@@ -361,8 +379,9 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
     // the view (the fan is then its three corners, in order).
     if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) continue;
     const glm::vec3 *corner[3] = {&a, &b, &c};
+    const unsigned index[3] = {t.x, t.y, t.z};
     for (int k = 0; k < 3; ++k) {
-      if (outline.contains(*corner[k], *corner[(k + 1) % 3])) {
+      if (outline.contains(index[k], index[(k + 1) % 3])) {
         draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
                  fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3]);
       }
