@@ -13,9 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
-#include <tuple>
-#include <utility>
+#include <cstring>
 #include <vector>
 
 namespace gs {
@@ -120,9 +118,13 @@ struct Outline {
   // is below 1e-3 texel.
   static constexpr float kNear = 1e4f;
   // Per vertex of the receiver, an id equal to another vertex's exactly where their world
-  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids.
+  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids; ids run
+  // from 0 up to id_count.
   std::vector<std::uint32_t> position_id;
-  std::vector<std::uint64_t> edges;  // (lower id << 32 | higher id), sorted
+  std::uint32_t id_count = 0;
+  // The outline's edges filed under their lower id: its higher ids at higher[start[id]] up to
+  // higher[start[id + 1]].
+  std::vector<std::uint32_t> start, higher;
   std::vector<Lit> lit;
   std::uint64_t key(unsigned p, unsigned q) const {
     const std::uint64_t a = position_id[p], b = position_id[q];
@@ -130,7 +132,9 @@ struct Outline {
   }
   // Whether the edge between vertices p and q of the receiver lies on the outline.
   bool contains(unsigned p, unsigned q) const {
-    return std::binary_search(edges.begin(), edges.end(), key(p, q));
+    const std::uint64_t edge = key(p, q);
+    const auto first = higher.begin() + start[edge >> 32], last = higher.begin() + start[(edge >> 32) + 1];
+    return std::find(first, last, static_cast<std::uint32_t>(edge)) != last;
   }
   // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
   // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
@@ -167,22 +171,34 @@ struct Outline {
   }
 };
 
-// Ids for the positions of `world` (world space), equal where the positions compare equal as
-// floats, infinities too (the outline's edges always joined so; position_ids in
-// caster_from_light.cpp gives a non-finite model position an id of its own), counted up in the
-// positions' lexicographic order.
-std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world) {
-  auto less = [](const glm::vec3 &p, const glm::vec3 &q) {
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  };
-  std::vector<std::uint32_t> order(world.size()), id(world.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return less(world[a], world[b]); });
-  std::uint32_t next = 0;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (k > 0 && less(world[order[k - 1]], world[order[k]])) ++next;
-    id[order[k]] = next;
+// Per position of `world` (world space), an id shared exactly by the positions that compare
+// equal to it as floats (0 and -0 alike, infinities too; a NaN joins none), counted up in order
+// of first appearance; `count` is the number of ids. Through a hash table of the positions' bits.
+std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world,
+                                              std::uint32_t &count) {
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * world.size()) ++bits;
+  constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
+  std::vector<std::uint32_t> slot(std::size_t{1} << bits, kEmpty);  // a vertex with the position
+  std::vector<std::uint32_t> id(world.size());
+  count = 0;
+  for (std::uint32_t i = 0; i < world.size(); ++i) {
+    const glm::vec3 p = world[i] + glm::vec3(0.0f);  // -0 as 0, so equal positions hash alike
+    std::uint32_t x, y, z;
+    std::memcpy(&x, &p.x, 4), std::memcpy(&y, &p.y, 4), std::memcpy(&z, &p.z, 4);
+    const std::uint64_t hash =
+        ((std::uint64_t{x} << 32 | y) * 0x9E3779B97F4A7C15u) ^ (std::uint64_t{z} * 0xC2B2AE3D27D4EB4Fu);
+    for (std::size_t s = hash >> (64 - bits);; s = (s + 1) & ((std::size_t{1} << bits) - 1)) {
+      if (slot[s] == kEmpty) {
+        slot[s] = i;
+        id[i] = count++;
+        break;
+      }
+      if (world[slot[s]] == world[i]) {
+        id[i] = id[slot[s]];
+        break;
+      }
+    }
   }
   return id;
 }
@@ -190,7 +206,7 @@ std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &worl
 Outline outline_of(const LightView &view, const ProjectedObject &receiver,
                    const std::vector<glm::vec4> &clip) {
   Outline outline;
-  outline.position_id = world_position_ids(receiver.world);
+  outline.position_id = world_position_ids(receiver.world, outline.id_count);
   std::vector<std::uint64_t> all;
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
@@ -212,12 +228,24 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
     if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
     outline.lit.push_back(lit);
   }
-  std::sort(all.begin(), all.end());
-  for (std::size_t i = 0; i < all.size();) {
-    std::size_t j = i + 1;
-    while (j < all.size() && all[j] == all[i]) ++j;
-    if (j == i + 1) outline.edges.push_back(all[i]);
-    i = j;
+  // The edges filed under their lower id (a counting sort), each id's few then sorted: an edge
+  // on the outline is one found once.
+  std::vector<std::uint32_t> start(outline.id_count + 1, 0), higher(all.size());
+  for (const std::uint64_t edge : all) ++start[(edge >> 32) + 1];
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) start[id + 1] += start[id];
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (const std::uint64_t edge : all) higher[next[edge >> 32]++] = static_cast<std::uint32_t>(edge);
+  outline.start.assign(outline.id_count + 1, 0);
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) {
+    const auto first = higher.begin() + start[id], last = higher.begin() + start[id + 1];
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      auto j = i + 1;
+      while (j != last && *j == *i) ++j;
+      if (j == i + 1) outline.higher.push_back(*i);
+      i = j;
+    }
+    outline.start[id + 1] = static_cast<std::uint32_t>(outline.higher.size());
   }
   return outline;
 }
