@@ -4,6 +4,7 @@
 #include "techniques/shadow_edge_error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -149,10 +150,16 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     if (!(from < to)) continue;
     const glm::vec3 start = glm::mix(shadow_ends[0], shadow_ends[1], from);
     const glm::vec3 end = glm::mix(shadow_ends[0], shadow_ends[1], to);
+    // Seen from behind the lit face, the caster hides the receiver beyond its foot, but for a
+    // rim's: there the receiver beyond it is in shadow from the foot on, and seen.
+    bool beyond = false;
     if (contact &&
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
-      continue;  // the caster hides the floor beyond its lit face's foot
+      if (!segment.rim) continue;
+      beyond = true;
     }
+    // A visible true edge's band excuses the pixels next to it.
+    const bool banded = !contact || beyond;
     const glm::vec2 screen_along =
         footprint_screen_pixels(space, end) - footprint_screen_pixels(space, start);
     const float length = glm::length(screen_along);
@@ -181,7 +188,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (!contact && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
+    if (banded && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
     // along a straight edge).
     const int samples = std::clamp(static_cast<int>(std::ceil(2.0f * glm::length(texel_along))), 1, 64);
@@ -195,12 +202,13 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
-        if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
+        if (banded && per_texel * kMostStrayTexels <= excused_pixels) break;
         const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
-        // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
-        // caster.
-        const float stray = contact ? std::max(offset, 0.0f) * per_texel
-                                    : std::max(std::abs(offset) * per_texel - excused_pixels, 0.0f);
+        // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
+        // caster); beside a hidden one, what leaves the caster.
+        const float seen = beyond ? std::max(-offset, 0.0f) : std::abs(offset);
+        const float stray = banded ? std::max(seen * per_texel - excused_pixels, 0.0f)
+                                   : std::max(offset, 0.0f) * per_texel;
         estimate.pixels[size] += sample_length * stray;
       }
     }
@@ -258,6 +266,50 @@ void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
       segment.face_point = sum / count;
       break;
     }
+  }
+}
+
+void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments) {
+  const Mesh &mesh = caster_mesh(caster);
+  // The mesh's edges by their ends' model positions (lower first), each once per triangle.
+  using End = std::array<float, 3>;
+  std::vector<std::pair<End, End>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const glm::uvec3 &t : mesh.triangles) {
+    for (const auto &[i, j] : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      End p{mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z};
+      End q{mesh.positions[j].x, mesh.positions[j].y, mesh.positions[j].z};
+      if (q < p) std::swap(p, q);
+      if (p != q) edges.emplace_back(p, q);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  // The rims (world): edges walked by one triangle.
+  std::vector<std::pair<glm::vec3, glm::vec3>> rims;
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  const auto world = [&](const End &p) {
+    const glm::vec3 w(caster.model_to_world * glm::vec4(p[0], p[1], p[2], 1.0f));
+    low = glm::min(low, w), high = glm::max(high, w);
+    return w;
+  };
+  for (std::size_t first = 0, end = 0; first < edges.size(); first = end) {
+    for (end = first + 1; end < edges.size() && edges[end] == edges[first];) ++end;
+    if (end - first == 1) rims.emplace_back(world(edges[first].first), world(edges[first].second));
+  }
+  if (rims.empty()) return;
+  // Metres: a segment's ends lie on their edge within float rounding of the rims' extent.
+  const float tolerance = 1e-4f * glm::length(high - low);
+  auto on_rim = [&](const std::pair<glm::vec3, glm::vec3> &rim, const glm::vec3 &p) {
+    const glm::vec3 along = rim.second - rim.first;
+    const float length_squared = glm::dot(along, along);
+    if (!(length_squared > 0.0f)) return false;
+    const float f = std::clamp(glm::dot(p - rim.first, along) / length_squared, 0.0f, 1.0f);
+    return glm::length(rim.first + f * along - p) <= tolerance;
+  };
+  for (SilhouetteSegment &segment : segments) {
+    segment.rim = std::any_of(rims.begin(), rims.end(), [&](const auto &rim) {
+      return on_rim(rim, segment.a) && on_rim(rim, segment.b);
+    });
   }
 }
 

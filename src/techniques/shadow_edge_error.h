@@ -23,11 +23,13 @@ namespace gs {
 // An edge of the caster's silhouette from the light (or its cut by a pierced receiver's plane),
 // world space, as much of it as step 1 draws; the normal (world, not unit) of the caster's face
 // along it that the light sees, and a point of that face off the edge (the texture covers its
-// side of the edge). A cut has a zero normal: neither is known there.
+// side of the edge). A cut has a zero normal: neither is known there. `rim`: the edge is on one
+// triangle only (an open caster's border, mark_rims): no back of the caster hides what is behind.
 struct SilhouetteSegment {
   glm::vec3 a{0.0f}, b{0.0f};
   glm::vec3 lit_face{0.0f};
   glm::vec3 face_point{0.0f};
+  bool rim = false;
 };
 
 // The share of the receivers' pixels a frame's estimate may reach: the 0.1% interior-error
@@ -64,7 +66,10 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // covers next to it, and its distance from the true edge taken to the screen across the edge.
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
-// from under the caster counts where the camera (world) sees past the caster's lit face.
+// from under the caster counts where the camera (world) sees past the caster's lit face. Seen
+// from behind its lit face, such an edge on a rim (a wall with no back, the foot of an open
+// tube) shows the receiver beyond it, in the caster's shadow right from the foot: there the
+// texture's edge straying under the caster lights it, beyond the band of the visible edge.
 void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
@@ -92,6 +97,10 @@ inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &
 // floor under a light 0.2 m up, issue 14). Cuts on faces turned away stay as they are.
 void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
                    const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments);
+
+// Sets `rim` on the segments among `segments` (world) that lie along an edge of the caster's
+// mesh that only one triangle has (its positions welded): an open tube's or a sheet's border.
+void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments);
 
 // The smallest shadow size from `size` up to `largest_size`, doubling, at which a caster's
 // shadow would be accepted: its coarsest texel footprint (`footprint` screen pixels at `size`,
