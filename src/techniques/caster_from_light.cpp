@@ -50,10 +50,11 @@ std::vector<unsigned> position_ids(const std::vector<glm::vec3> &positions) {
 // one facing away, or on one triangle only (an open mesh's rim). Edges are joined by their
 // ends' positions (position_ids); facing is in light view space, with the light at the origin.
 // One walk of each edge also has kTakenWalk set, so that an edge can be taken once: the first
-// whose triangle faces the light (the first of a rim facing away). `closed` is
+// whose triangle faces the light (the first of a rim facing away), and a rim's walk (an edge
+// with two ends apart walked by one triangle) kRimWalk. `closed` is
 // is_closed_surface(mesh) from the same sorted walks (each welded edge walked as often each way
 // by the triangles weld keeps), so the caster's edges are sorted once a view.
-constexpr std::uint8_t kOnSilhouette = 1, kTakenWalk = 2;
+constexpr std::uint8_t kOnSilhouette = 1, kTakenWalk = 2, kRimWalk = 4;
 std::vector<std::uint8_t> silhouette_walks(const Mesh &mesh, const std::vector<glm::vec4> &in_view,
                                            bool &closed) {
   const std::vector<unsigned> ids = position_ids(mesh.positions);
@@ -112,6 +113,9 @@ std::vector<std::uint8_t> silhouette_walks(const Mesh &mesh, const std::vector<g
     std::size_t taken = first;
     while (taken + 1 < end && !walks[taken].facing) ++taken;
     silhouette[walks[taken].walk] |= kTakenWalk;
+    if (count == 1 && walks[first].edge >> 32 != (walks[first].edge & 0xFFFFFFFFu)) {
+      silhouette[walks[first].walk] |= kRimWalk;
+    }
   }
   return silhouette;
 }
@@ -225,6 +229,10 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
       if (std::tie(mesh.positions[j].x, mesh.positions[j].y, mesh.positions[j].z) <
           std::tie(mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z)) {
         std::swap(i, j);
+      }
+      if (walk & kRimWalk) {  // the whole edge, whatever part of it the caster planes keep
+        view.rims.emplace_back(glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f)),
+                               glm::vec3(object.model_to_world * glm::vec4(mesh.positions[j], 1.0f)));
       }
       // The part of the edge inside the caster planes (light view space, parametric clip).
       float from = 0.0f, to = 1.0f;

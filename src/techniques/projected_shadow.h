@@ -20,6 +20,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -109,6 +110,9 @@ struct LightView {
   // The same silhouette's edges (world space), for the error along the shadow's edges
   // (shadow_edge_error.h); the cut by a SurfaceMask's surface is not among them.
   std::vector<SilhouetteSegment> silhouette_segments;
+  // The caster's rim: its edges that one triangle walks (world space, each edge's ends in the
+  // order of their model positions), for mark_rims (shadow_edge_error.h).
+  std::vector<std::pair<glm::vec3, glm::vec3>> rims;
 };
 
 struct ShadowTexture {

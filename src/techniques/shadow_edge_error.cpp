@@ -4,7 +4,6 @@
 #include "techniques/shadow_edge_error.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -269,34 +268,14 @@ void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
   }
 }
 
-void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments) {
-  const Mesh &mesh = caster_mesh(caster);
-  // The mesh's edges by their ends' model positions (lower first), each once per triangle.
-  using End = std::array<float, 3>;
-  std::vector<std::pair<End, End>> edges;
-  edges.reserve(3 * mesh.triangles.size());
-  for (const glm::uvec3 &t : mesh.triangles) {
-    for (const auto &[i, j] : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
-      End p{mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z};
-      End q{mesh.positions[j].x, mesh.positions[j].y, mesh.positions[j].z};
-      if (q < p) std::swap(p, q);
-      if (p != q) edges.emplace_back(p, q);
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  // The rims (world): edges walked by one triangle.
-  std::vector<std::pair<glm::vec3, glm::vec3>> rims;
-  glm::vec3 low(INFINITY), high(-INFINITY);
-  const auto world = [&](const End &p) {
-    const glm::vec3 w(caster.model_to_world * glm::vec4(p[0], p[1], p[2], 1.0f));
-    low = glm::min(low, w), high = glm::max(high, w);
-    return w;
-  };
-  for (std::size_t first = 0, end = 0; first < edges.size(); first = end) {
-    for (end = first + 1; end < edges.size() && edges[end] == edges[first];) ++end;
-    if (end - first == 1) rims.emplace_back(world(edges[first].first), world(edges[first].second));
-  }
+void mark_rims(const std::vector<std::pair<glm::vec3, glm::vec3>> &rims,
+               std::vector<SilhouetteSegment> &segments) {
   if (rims.empty()) return;
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (const auto &[from, to] : rims) {
+    low = glm::min(low, glm::min(from, to));
+    high = glm::max(high, glm::max(from, to));
+  }
   // Metres: a segment's ends lie on their edge within float rounding of the rims' extent.
   const float tolerance = 1e-4f * glm::length(high - low);
   auto on_rim = [&](const std::pair<glm::vec3, glm::vec3> &rim, const glm::vec3 &p) {

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -98,9 +99,11 @@ inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &
 void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
                    const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments);
 
-// Sets `rim` on the segments among `segments` (world) that lie along an edge of the caster's
-// mesh that only one triangle has (its positions welded): an open tube's or a sheet's border.
-void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments);
+// Sets `rim` on the segments among `segments` (world) that lie along one of `rims` (world): the
+// caster's edges that only one triangle has, its positions welded (LightView::rims, found with
+// its silhouette in step 1): an open tube's or a sheet's border.
+void mark_rims(const std::vector<std::pair<glm::vec3, glm::vec3>> &rims,
+               std::vector<SilhouetteSegment> &segments);
 
 // The smallest shadow size from `size` up to `largest_size`, doubling, at which a caster's
 // shadow would be accepted: its coarsest texel footprint (`footprint` screen pixels at `size`,
