@@ -186,11 +186,18 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
             ? std::vector<ContactError>(scene_.objects.size())
             : contact_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
     // So does the false shadow a caster that receives casts on its own lit side where the light
-    // grazes it (depth_map_self_shadow.h): near no edge, a texel's ray strikes it nearer.
+    // grazes it (depth_map_self_shadow.h): near no edge, a texel's ray strikes it nearer. Each
+    // larger size replayed in the frustum fitted at that size (its pad for the lookup's reach
+    // is narrower), as the texels' pattern there decides which grazed pixels it shadows.
+    std::vector<LightFrustum> frusta;
+    for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+      frusta.push_back(size == 0 ? frustum
+                                 : fit_light_frustum(meshes_, scene_.lights[light], light, side << size));
+    }
     const std::vector<EdgeErrorEstimate> grazed =
         std::isinf(options_.depth_map_largest_footprint_px)
             ? std::vector<EdgeErrorEstimate>(scene_.objects.size())
-            : self_shadow_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
+            : self_shadow_errors(scene_, meshes_, frusta, scene_.lights[light], side, options_);
     for (CasterFootprint &footprint :
          caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup)) {
       const ContactError &contact = contacts[footprint.caster];

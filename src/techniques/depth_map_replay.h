@@ -94,26 +94,45 @@ class MapReplay {
   }
 
   // Whether the lookup at `texels` with the compared depth `depth` says shadow.
-  bool shadowed(const glm::dvec2 &texels, double depth) {
+  bool shadowed(const glm::dvec2 &texels, double depth) { return shadowing(texels, depth) >= 0; }
+
+  // Where the lookup says shadow, the surface (its index, in the order added) that the heaviest
+  // of the texels saying so holds; -1 where it says lit.
+  int shadowing(const glm::dvec2 &texels, double depth) {
     if (!options_.depth_map_linear) {
-      return depth > stored(static_cast<int>(std::floor(texels.x)), static_cast<int>(std::floor(texels.y)));
+      const Texel &t = stored(static_cast<int>(std::floor(texels.x)), static_cast<int>(std::floor(texels.y)));
+      return depth > t.depth ? t.surface : -1;
     }
     const double x0 = std::floor(texels.x - 0.5), y0 = std::floor(texels.y - 0.5);
     const double wx = texels.x - 0.5 - x0, wy = texels.y - 0.5 - y0;
     const int i = static_cast<int>(x0), j = static_cast<int>(y0);
-    const double share = (1.0 - wy) * ((1.0 - wx) * (depth > stored(i, j)) + wx * (depth > stored(i + 1, j))) +
-                         wy * ((1.0 - wx) * (depth > stored(i, j + 1)) + wx * (depth > stored(i + 1, j + 1)));
-    return share >= 0.5;
+    const double weight[4] = {(1.0 - wy) * (1.0 - wx), (1.0 - wy) * wx, wy * (1.0 - wx), wy * wx};
+    double share = 0.0, heaviest = -1.0;
+    int surface = -1;
+    for (int k = 0; k < 4; ++k) {
+      const Texel &t = stored(i + (k & 1), j + (k >> 1));
+      if (!(depth > t.depth)) continue;
+      share += weight[k];
+      if (weight[k] > heaviest) heaviest = weight[k], surface = t.surface;
+    }
+    return share >= 0.5 ? surface : -1;
   }
 
   int side() const { return side_; }
 
  private:
+  // What a texel holds: its depth, and the surface that drew it (-1: none).
+  struct Texel {
+    double depth = 1.0;
+    int surface = -1;
+  };
+
   // The depth texel (i, j) holds: the nearest surface on the ray through its centre with its
   // offset, or the nearer of that and the bounded copy's; 1 (cleared, and the lit border) where
   // nothing is drawn or outside the map.
-  double stored(int i, int j) {
-    if (i < 0 || j < 0 || i >= side_ || j >= side_) return 1.0;
+  const Texel &stored(int i, int j) {
+    static const Texel outside;
+    if (i < 0 || j < 0 || i >= side_ || j >= side_) return outside;
     const long long key = static_cast<long long>(j) * side_ + i;
     const auto known = texels_.find(key);
     if (known != texels_.end()) return known->second;
@@ -121,23 +140,25 @@ class MapReplay {
     const glm::dvec4 far_point = from_clip_ * glm::dvec4(x, y, 1.0, 1.0);
     const dvec3 o(light_);
     const dvec3 d = dvec3(far_point) / far_point.w - o;
-    double nearest = 1.0;
-    for (const DrawnSurface &surface : surfaces_) {
+    Texel nearest;
+    for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+      const DrawnSurface &surface = surfaces_[k];
       double t = INFINITY;
       std::size_t hit = 0;
       if (surface.pushed.nearest(o, d, 0.0, t, hit)) {
-        nearest = std::min(nearest, depth_of(o + d * t) + surface.slope_term[hit] + units_);
+        const double depth = depth_of(o + d * t) + surface.slope_term[hit] + units_;
+        if (depth < nearest.depth) nearest = {depth, static_cast<int>(k)};
       }
       t = INFINITY;
       if (bounded_ && surface.original.nearest(o, d, 0.0, t, hit)) {
         const dvec3 p = o + d * t;
         const double light_depth = std::max(-(view_ * glm::dvec4(p, 1.0)).z, 0.0);
         const double back = options_.depth_bias_bound * texel_per_metre_ * light_depth;
-        nearest = std::min(nearest, depth_of(p + glm::normalize(d) * back) + units_);
+        const double depth = depth_of(p + glm::normalize(d) * back) + units_;
+        if (depth < nearest.depth) nearest = {depth, static_cast<int>(k)};
       }
     }
-    texels_.emplace(key, nearest);
-    return nearest;
+    return texels_.emplace(key, nearest).first->second;
   }
 
   double depth_of(const dvec3 &p) const {
@@ -152,7 +173,7 @@ class MapReplay {
   double texel_per_metre_ = 0.0, units_ = 0.0;
   bool bounded_ = true;
   std::vector<DrawnSurface> surfaces_;
-  std::unordered_map<long long, double> texels_;
+  std::unordered_map<long long, Texel> texels_;
 };
 
 // An object's triangles (world) and their box, for rays along segments.

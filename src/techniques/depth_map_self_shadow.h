@@ -21,11 +21,12 @@ namespace gs::depth_map {
 // triangles that face `light` within kGrazingTangent * (the slope bound's reach) of edge-on,
 // which the camera sees, the light reaches past every caster, which lie farther than two pixels
 // from any shadow (inside that, a wrong pixel is the band of a true edge), and which the lookup
-// of the `side`-texel map of `frustum` (the technique's `options`) holding that object as step 1
-// draws it shadows; at the map's side and at 2, 4 and 8 times it.
+// of the `side << k`-texel map of `frusta[k]` (the technique's `options`; k = 0 .. 3, one
+// frustum fitted at each size) shadows, each caster in it as step 1 draws it: counted for the
+// caster whose texels say shadow there.
 std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
                                                   const std::vector<WorldMesh> &meshes,
-                                                  const LightFrustum &frustum,
+                                                  const std::vector<LightFrustum> &frusta,
                                                   const SpotLight &light, int side,
                                                   const TechniqueOptions &options);
 
