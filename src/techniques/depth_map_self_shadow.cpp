@@ -45,8 +45,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   const double grazing_tangent =
       kGrazingTangent * kFilterReachTexels / static_cast<double>(options.depth_bias_bound);
   FootprintSpace space;  // for the screen positions
-  space.camera_clip = camera_projection(scene.camera, scene.width, scene.height) *
-                      camera_view(scene.camera);
+  space.camera_clip =
+      camera_projection(scene.camera, scene.width, scene.height) * camera_view(scene.camera);
   space.pixels = glm::vec2(static_cast<float>(scene.width), static_cast<float>(scene.height));
   const glm::dmat4 camera_clip(space.camera_clip);
   const dvec3 camera(scene.camera.position), light_position(light.position);
@@ -58,9 +58,12 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // diagonal, src/measure/ground_truth.cpp), which a grazed surface's own rounding needs.
   glm::dvec3 scene_low(INFINITY), scene_high(-INFINITY);
   for (const WorldMesh &mesh : meshes) {
-    for (const glm::vec3 &p : mesh.position) scene_low = glm::min(scene_low, dvec3(p)), scene_high = glm::max(scene_high, dvec3(p));
+    for (const glm::vec3 &p : mesh.position)
+      scene_low = glm::min(scene_low, dvec3(p)), scene_high = glm::max(scene_high, dvec3(p));
   }
-  const double offset = scene_high.x >= scene_low.x ? 1e-4 * std::max(0.5 * glm::length(scene_high - scene_low), 1e-6) : 1e-4;
+  const double offset = scene_high.x >= scene_low.x
+                            ? 1e-4 * std::max(0.5 * glm::length(scene_high - scene_low), 1e-6)
+                            : 1e-4;
   // Whether a caster (the object itself included) blocks the segment from the light to `point`
   // on the face with unit normal `normal` (towards the light), as the truth casts it.
   auto shadowed = [&](const dvec3 &point, const dvec3 &normal) {
@@ -90,7 +93,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
       const dvec3 to_light = light_position - centre;
       // The light's angle to the face: sine over cosine, towards the light only (the mask
       // shadows no face turned away).
-      const double sine = glm::dot(face, to_light), length = glm::length(face) * glm::length(to_light);
+      const double sine = glm::dot(face, to_light),
+                   length = glm::length(face) * glm::length(to_light);
       if (!(sine > 0.0) || !(length > 0.0)) continue;
       const double cosine = std::sqrt(std::max(length * length - sine * sine, 0.0));
       if (!(sine < grazing_tangent * cosine)) continue;
@@ -105,7 +109,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
         const glm::dvec4 c = camera_clip * glm::dvec4(corner[k], 1.0);
         before = before && c.w > 0.0;
         w[k] = c.w;
-        screen[k] = (glm::dvec2(c.x, c.y) / c.w * 0.5 + 0.5) * glm::dvec2(scene.width, scene.height);
+        screen[k] =
+            (glm::dvec2(c.x, c.y) / c.w * 0.5 + 0.5) * glm::dvec2(scene.width, scene.height);
       }
       if (!before) continue;
       const double twice_area = (screen[1].x - screen[0].x) * (screen[2].y - screen[0].y) -
@@ -125,13 +130,16 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
           bool inside = true;
           for (int k = 0; k < 3; ++k) {
             const glm::dvec2 &p = screen[(k + 1) % 3], &q = screen[(k + 2) % 3];
-            const double edge = ((q.x - p.x) * (centre_px.y - p.y) - (centre_px.x - p.x) * (q.y - p.y)) / twice_area;
+            const double edge =
+                ((q.x - p.x) * (centre_px.y - p.y) - (centre_px.x - p.x) * (q.y - p.y)) /
+                twice_area;
             inside = inside && edge >= 0.0;
             weight[k] = edge / w[k];
             sum += weight[k];
           }
           if (!inside || !(sum > 0.0)) continue;
-          const dvec3 point = (corner[0] * weight[0] + corner[1] * weight[1] + corner[2] * weight[2]) / sum;
+          const dvec3 point =
+              (corner[0] * weight[0] + corner[1] * weight[1] + corner[2] * weight[2]) / sum;
           if (!inside_planes(beam.inner, glm::vec3(point))) continue;
           samples.push_back({point, &mesh, t, 1.0});
         }
@@ -148,7 +156,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
     for (std::size_t m = 0; m < bodies.size() && visible; ++m) {
       visible = !blocks(bodies[m], camera, sample.point - camera);
     }
-    if (visible && !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle))) kept.push_back(sample);
+    if (visible && !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle)))
+      kept.push_back(sample);
   }
   std::vector<int> band(kept.size(), 0);
   // Whether a wrong pixel here is the band of a true shadow's edge (another caster's, or the
@@ -160,12 +169,18 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
     const std::vector<glm::vec3> &position = sample.mesh->position;
     const glm::uvec3 &u = sample.mesh->object->mesh.triangles[sample.triangle];
     const dvec3 a(position[u.x]), b(position[u.y]), c(position[u.z]);
-    // Screen pixels per metre along the triangle's edges a-b and a-c, from small steps.
+    // Screen pixels per metre along two unit directions in the triangle's plane (e1 along a-b,
+    // e2 across it), from small steps.
     const double step = 1e-4 * std::max(glm::length(sample.point - camera), 1e-6);
-    const dvec3 e1 = glm::normalize(b - a), e2 = glm::normalize(glm::cross(glm::cross(b - a, c - a), e1));
+    const dvec3 e1 = glm::normalize(b - a),
+                e2 = glm::normalize(glm::cross(glm::cross(b - a, c - a), e1));
     const glm::dvec2 at(footprint_screen_pixels(space, glm::vec3(sample.point)));
-    const glm::dvec2 d1 = (glm::dvec2(footprint_screen_pixels(space, glm::vec3(sample.point + e1 * step))) - at) / step;
-    const glm::dvec2 d2 = (glm::dvec2(footprint_screen_pixels(space, glm::vec3(sample.point + e2 * step))) - at) / step;
+    const glm::dvec2 d1 =
+        (glm::dvec2(footprint_screen_pixels(space, glm::vec3(sample.point + e1 * step))) - at) /
+        step;
+    const glm::dvec2 d2 =
+        (glm::dvec2(footprint_screen_pixels(space, glm::vec3(sample.point + e2 * step))) - at) /
+        step;
     const double det = d1.x * d2.y - d1.y * d2.x;
     if (!(std::abs(det) > 0.0)) return true;  // seen edge-on: all of it is an edge
     for (int dx = -2; dx <= 2; ++dx) {
@@ -180,7 +195,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
         for (std::size_t m = 0; m < bodies.size(); ++m) {
           double t = nearest;
           std::size_t hit = 0;
-          if (bodies[m].triangles.nearest(camera, ray, 1e-9, t, hit)) nearest = t, seen = m, seen_triangle = hit;
+          if (bodies[m].triangles.nearest(camera, ray, 1e-9, t, hit))
+            nearest = t, seen = m, seen_triangle = hit;
         }
         if (!std::isfinite(nearest)) continue;
         // A face turned away from the light, or out of the beam, is no shadow to the truth (nor
@@ -188,7 +204,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
         const dvec3 point = camera + ray * nearest;
         const dvec3 normal = unit_face(meshes[seen], seen_triangle);
         const glm::uvec3 &corners = meshes[seen].object->mesh.triangles[seen_triangle];
-        if (!(glm::dot(normal, light_position - dvec3(meshes[seen].position[corners.x])) > 0.0)) continue;
+        if (!(glm::dot(normal, light_position - dvec3(meshes[seen].position[corners.x])) > 0.0))
+          continue;
         if (!inside_planes(beam.inner, glm::vec3(point))) continue;
         if (shadowed(point, normal)) return true;
       }
@@ -199,7 +216,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // caster whose texel weighs most in it.
   std::vector<std::size_t> drawn;  // per surface of the replay, its object
   for (const WorldMesh &mesh : meshes) {
-    if (mesh.object->casts_shadow) drawn.push_back(static_cast<std::size_t>(mesh.object - scene.objects.data()));
+    if (mesh.object->casts_shadow)
+      drawn.push_back(static_cast<std::size_t>(mesh.object - scene.objects.data()));
   }
   for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
     const int map_side = side << size;
@@ -214,13 +232,15 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
     double lowered = 0.0;
     for (std::size_t k = 0; k < kept.size(); ++k) {
       const GrazedSample &sample = kept[k];
-      if (!lowered_for || sample.mesh != lowered_for->mesh || sample.triangle != lowered_for->triangle) {
+      if (!lowered_for || sample.mesh != lowered_for->mesh ||
+          sample.triangle != lowered_for->triangle) {
         // The receiver's lowered depth (r/q) on this triangle: its receiver-plane bias.
         const std::vector<glm::vec3> &position = sample.mesh->position;
         const glm::uvec3 &u = sample.mesh->object->mesh.triangles[sample.triangle];
         const std::vector<glm::vec3> corners = {position[u.x], position[u.y], position[u.z]};
         const glm::vec4 plain = to_map * glm::vec4(corners[0], 1.0f);
-        const glm::vec4 biased = biased_map_coords(corners, to_map, map_side, options.depth_bias_receiver)[0];
+        const glm::vec4 biased =
+            biased_map_coords(corners, to_map, map_side, options.depth_bias_receiver)[0];
         lowered = plain.w != 0.0f ? static_cast<double>((plain.z - biased.z) / plain.w) : 0.0;
         lowered_for = &sample;
       }
@@ -231,7 +251,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
       if (surface < 0) continue;
       if (band[k] == 0) band[k] = near_shadow(sample) ? 1 : 2;
       if (band[k] != 2) continue;
-      result[drawn[static_cast<std::size_t>(surface)]].pixels[size] += static_cast<float>(sample.pixels);
+      result[drawn[static_cast<std::size_t>(surface)]].pixels[size] +=
+          static_cast<float>(sample.pixels);
       pixels += sample.pixels;
     }
     if (!(pixels > 0.0)) break;  // finer maps only lower the depth change a texel spans
