@@ -7,6 +7,7 @@
 #include "techniques/depth_map_contacts.h"
 #include "techniques/depth_map_facets.h"
 #include "techniques/depth_map_footprint.h"
+#include "techniques/depth_map_self_shadow.h"
 #include "techniques/light_beam.h"
 #include "techniques/scene_pass.h"
 #include "techniques/shadow_edge_error.h"
@@ -184,6 +185,19 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
         std::isinf(options_.depth_map_largest_footprint_px)
             ? std::vector<ContactError>(scene_.objects.size())
             : contact_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
+    // So does the false shadow a caster that receives casts on its own lit side where the light
+    // grazes it (depth_map_self_shadow.h): near no edge, a texel's ray strikes it nearer. Each
+    // larger size replayed in the frustum fitted at that size (its pad for the lookup's reach
+    // is narrower), as the texels' pattern there decides which grazed pixels it shadows.
+    std::vector<LightFrustum> frusta;
+    for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+      frusta.push_back(size == 0 ? frustum
+                                 : fit_light_frustum(meshes_, scene_.lights[light], light, side << size));
+    }
+    const std::vector<EdgeErrorEstimate> grazed =
+        std::isinf(options_.depth_map_largest_footprint_px)
+            ? std::vector<EdgeErrorEstimate>(scene_.objects.size())
+            : self_shadow_errors(scene_, meshes_, frusta, scene_.lights[light], side, options_);
     for (CasterFootprint &footprint :
          caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup)) {
       const ContactError &contact = contacts[footprint.caster];
@@ -191,6 +205,11 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
         footprint.edge_error_receiver = contact.receiver;
       }
       footprint.edge_error.add(contact.pixels);
+      const EdgeErrorEstimate &own = grazed[footprint.caster];
+      if (own.pixels[0] > footprint.edge_error.pixels[0]) {
+        footprint.edge_error_receiver = footprint.caster;
+      }
+      footprint.edge_error.add(own);
       const float pixels = footprint.coarsest.pixels_per_texel;
       texel_footprint_px_ = std::max(texel_footprint_px_, pixels);
       // The error along its shadow's edges, against what the frame's shadows before it left.

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -42,9 +43,12 @@ TEST(HardCases, TopsLitAtAGrazingAngleReachingBehindTheLight) {
 
 // The check sees the fault: without the receiver's bias the depth map's acne on da1's and da2's
 // tops is back (measured 0.46% and 1.7%; 0.33% and 1.2% before the fix, when only those triangles got none).
+// Drawn and measured with the estimates off: with them on, the replay of grazed pixels
+// (depth_map_self_shadow.h) refuses da2's ledge (about 148 px estimated, 16 accepted).
 TEST(HardCases, TopsLitAtAGrazingAngleWithoutTheReceiverBiasHaveAcne) {
   gs::TechniqueOptions no_receiver_bias;
   no_receiver_bias.depth_bias_receiver = 0.0f;
+  no_receiver_bias.depth_map_largest_footprint_px = INFINITY;
   for (const char *file : {"audit/da1_wall_top_light_15cm_map256.json",
                            "audit/da2_ledge_light_beside_map512.json"}) {
     const gs::Scene scene = load(file);
