@@ -37,7 +37,8 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
         glm::dot(c.caster_normal, view.position - c.a) <= 0.0f) {
       continue;  // not drawn in step 1 (the receiver's mask, the closed caster): no cut to hide
     }
-    // The hidden side: in the receiver's plane, across the segment, behind the caster's plane.
+    // The hidden side: in the receiver's plane, across the segment, behind the caster's plane
+    // (the strip's corners there are where the caster's plane lies in front of the receiver).
     const glm::vec3 along_world = c.b - c.a;
     glm::vec3 inward = glm::cross(c.receiver_normal, along_world);
     if (glm::dot(c.caster_normal, inward) > 0.0f) inward = -inward;
@@ -58,7 +59,7 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     glm::vec2 in(-along.y, along.x);
     if (glm::dot(in, glm::vec2(vi.x, vi.y) - a) < 0.0f) in = -in;
     const float k = kContactStripTexels;
-    const glm::vec2 corners[4] = {a - along * k, b + along * k, b + (along + in) * k,
+    const glm::vec2 corners[4] = {a - (along + in) * k, b + (along - in) * k, b + (along + in) * k,
                                   a + (in - along) * k};
     std::array<GrVertex, 4> strip;
     bool placed = true;

@@ -5,10 +5,12 @@
 // it). The masked texture holds that cut exactly, but a texel is wide: bilinear filtering (and a
 // point sample's texel) beside the line darkens the receiver's visible side up to a texel and a
 // half from it, which under a grazing light is many screen pixels of the receiver (issue 14,
-// grazing_6001: boxes and a fighter through each other in the dunes). Step 1 keeps the caster out
-// of a strip of texels on the hidden side of the line, as deep as filtering reaches, so the
-// visible side reads no covered texel across it. Spaces: world in; the light's size x size Glide
-// screen (texels, y down) with 1/W from depth_oow out.
+// grazing_6001: boxes and a fighter through each other in the dunes). And on the visible side
+// the caster's triangle lies behind the surface by less than a W-buffer code near the line, so
+// step 1's depth test there is a coin toss. Step 1 keeps that caster triangle out of a strip of
+// texels on both sides of the line, as deep as filtering reaches: the visible side reads no
+// covered texel from it. Spaces: world in; the light's size x size Glide screen (texels, y down)
+// with 1/W from depth_oow out.
 #pragma once
 
 #include <glide.h>
@@ -29,7 +31,7 @@ struct ContactSegment {
   glm::vec3 caster_normal;
 };
 
-// Texels from the line the strip reaches into the hidden side (and beyond each end): bilinear
+// Texels from the line the strip reaches on each side (and beyond each end): bilinear
 // filtering reads texel centres less than one texel away on each axis, and the half texel more
 // absorbs the shim's 1/16 snapping, as the receiver outline's fins do (pierced_surfaces.cpp).
 constexpr float kContactStripTexels = 1.5f;
