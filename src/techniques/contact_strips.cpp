@@ -37,27 +37,18 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
         glm::dot(c.caster_normal, view.position - c.a) <= 0.0f) {
       continue;  // not drawn in step 1 (the receiver's mask, the closed caster): no cut to hide
     }
-    // The hidden side: in the receiver's plane, across the segment, behind the caster's plane
-    // (the strip's corners there are where the caster's plane lies in front of the receiver).
-    const glm::vec3 along_world = c.b - c.a;
-    glm::vec3 inward = glm::cross(c.receiver_normal, along_world);
-    if (glm::dot(c.caster_normal, inward) > 0.0f) inward = -inward;
-    const float length = glm::length(along_world);
-    if (!(glm::length(inward) > 0.0f) || !(length > 0.0f)) continue;
     const glm::vec4 clip_a = light_clip * glm::vec4(c.a, 1.0f);
     const glm::vec4 clip_b = light_clip * glm::vec4(c.b, 1.0f);
-    const glm::vec4 clip_in =
-        light_clip * glm::vec4(c.a + glm::normalize(inward) * (1e-3f * length), 1.0f);
-    if (!(clip_a.w > 0.0f && clip_b.w > 0.0f && clip_in.w > 0.0f)) continue;
+    if (!(clip_a.w > 0.0f && clip_b.w > 0.0f)) continue;
     const GrVertex va = to_screen(clip_a, view.size, view.size);
     const GrVertex vb = to_screen(clip_b, view.size, view.size);
-    const GrVertex vi = to_screen(clip_in, view.size, view.size);
     const glm::vec2 a(va.x, va.y), b(vb.x, vb.y);
     const float screen_length = glm::length(b - a);
     if (!(screen_length > 0.0f)) continue;  // the segment along a light ray: no width to hide
+    // Both sides of the cut alike: the hidden side (the caster's plane in front of the
+    // receiver) and the visible one (behind it, by less than a code near the line).
     const glm::vec2 along = (b - a) / screen_length;
-    glm::vec2 in(-along.y, along.x);
-    if (glm::dot(in, glm::vec2(vi.x, vi.y) - a) < 0.0f) in = -in;
+    const glm::vec2 in(-along.y, along.x);
     const float k = kContactStripTexels;
     const glm::vec2 corners[4] = {a - (along + in) * k, b + (along - in) * k, b + (along + in) * k,
                                   a + (in - along) * k};
