@@ -11,6 +11,7 @@
 #include <glideutl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -270,6 +271,8 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
       glm::min(box_high, surface_high + margin), caster, caster_index);
   pierced.caster_crossing.assign(caster_triangles.size(), 0);
   bool any = false;
+  // Each crossing point (world) with its pair: (kept surface triangle, kept caster triangle).
+  std::vector<std::tuple<std::size_t, std::size_t, glm::vec3>> points;
   // The caster's edges through the receiver's triangles, and the receiver's through the caster's.
   auto edges_through = [&](const std::vector<Triangle> &edges, const std::vector<Triangle> &faces,
                            const TriangleGrid &grid, bool edges_are_caster) {
@@ -283,6 +286,10 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
             if (!crosses(faces[f], p, q, tolerance)) continue;
             pierced.caster_crossing[edges_are_caster ? caster_index[e] : caster_index[f]] = 1;
             any = true;
+            const float dp = glm::dot(faces[f].normal, p - faces[f].a);
+            const float dq = glm::dot(faces[f].normal, q - faces[f].a);
+            points.emplace_back(edges_are_caster ? f : e, edges_are_caster ? e : f,
+                                p + (q - p) * (dp / (dp - dq)));
           }
         });
       }
@@ -290,6 +297,29 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
   };
   edges_through(caster, surface, surface_grid, true);
   edges_through(surface, caster, caster_grid, false);
+  // A pair's crossing points lie on the segment the two triangles share: its ends are the two
+  // farthest apart.
+  std::sort(points.begin(), points.end(), [](const auto &x, const auto &y) {
+    return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
+  });
+  for (std::size_t i = 0; i < points.size();) {
+    std::size_t j = i + 1;
+    while (j < points.size() && std::get<0>(points[j]) == std::get<0>(points[i]) &&
+           std::get<1>(points[j]) == std::get<1>(points[i])) {
+      ++j;
+    }
+    ContactSegment contact{std::get<2>(points[i]), std::get<2>(points[i]),
+                           surface[std::get<0>(points[i])].normal,
+                           caster[std::get<1>(points[i])].normal};
+    for (std::size_t k = i; k < j; ++k) {
+      for (std::size_t l = k + 1; l < j; ++l) {
+        const glm::vec3 &u = std::get<2>(points[k]), &v = std::get<2>(points[l]);
+        if (glm::distance(u, v) > glm::distance(contact.a, contact.b)) contact.a = u, contact.b = v;
+      }
+    }
+    if (contact.a != contact.b) pierced.contacts.push_back(contact);
+    i = j;
+  }
   pierced.casts = true;  // whatever lies behind, step 1's depth test decides per texel
   return any;
 }
@@ -368,6 +398,16 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
       }
     }
   }
+  // Beside the caster's cut by this surface, on its hidden side, the caster is kept out as far
+  // as filtering reaches (contact_strips.h); drawn whatever their winding (the caster is closed,
+  // so step 1 culls with GR_CULL_POSITIVE, which it gets back).
+  if (!view.contact_strips.empty()) grCullMode(GR_CULL_DISABLE);
+  for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const GrVertex &v : strip) low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+    if (view.covered_near(low, high, 1.0f)) draw_fan(std::vector<GrVertex>(strip.begin(), strip.end()));
+  }
+  if (!view.contact_strips.empty()) grCullMode(GR_CULL_POSITIVE);
   grColorMask(FXTRUE, FXFALSE);
   grDepthMask(FXFALSE);
 }

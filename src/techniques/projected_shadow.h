@@ -15,6 +15,7 @@
 #include <glide.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -108,6 +109,9 @@ struct LightView {
   // The same silhouette's edges (world space), for the error along the shadow's edges
   // (shadow_edge_error.h); the cut by a SurfaceMask's surface is not among them.
   std::vector<SilhouetteSegment> silhouette_segments;
+  // A SurfaceMask's strips beside the caster's cut by the receiver (contact_strips.h; the
+  // light's screen, texels): step 1 keeps the caster out of them.
+  std::vector<std::array<GrVertex, 4>> contact_strips;
 };
 
 struct ShadowTexture {
