@@ -2,6 +2,7 @@
 // the light's Glide screen (texels, y down) and light clip w (metres along the light's axis) out.
 #include "techniques/contact_strips.h"
 
+#include "techniques/contact_strip_rays.h"
 #include "techniques/pierced_receivers.h"
 #include "techniques/projected_shadow.h"
 #include "techniques/projection.h"
@@ -13,11 +14,16 @@
 namespace gs {
 
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
-                                                    const std::vector<ContactSegment> &contacts) {
+                                                    const std::vector<ContactSegment> &contacts,
+                                                    const SceneObject &caster,
+                                                    const ProjectedObject &receiver,
+                                                    const glm::vec3 &camera) {
   std::vector<std::array<GrVertex, 4>> strips;
+  if (contacts.empty()) return strips;
   const glm::mat4 light_clip = view.projection * view.view;
   const glm::mat4 clip_to_world = glm::inverse(light_clip);
   const float size = static_cast<float>(view.size);
+  ContactStripRays rays(view, caster, receiver, camera);
   // The light clip w where the light's ray through a screen point (texels) meets a world plane;
   // false when it meets it behind the light or not at all.
   auto w_on_plane = [&](const glm::vec2 &screen, const glm::vec3 &normal, const glm::vec3 &point,
@@ -32,6 +38,9 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     w = (light_clip * glm::vec4(view.position + direction * t, 1.0f)).w;
     return w > 0.0f;
   };
+  const float k = kContactStripTexels;
+  const float reach = kContactStripTexels;  // the filter's, around a texel a strip empties
+  const float step = 0.5f;                  // between the rays, texels
   for (const ContactSegment &c : contacts) {
     if (glm::dot(c.receiver_normal, view.position - c.a) <= 0.0f ||
         glm::dot(c.caster_normal, view.position - c.a) <= 0.0f) {
@@ -46,28 +55,75 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     const float screen_length = glm::length(b - a);
     if (!(screen_length > 0.0f)) continue;  // the segment along a light ray: no width to hide
     // Both sides of the cut alike: the hidden side (the caster's plane in front of the
-    // receiver) and the visible one (behind it, by less than a code near the line).
+    // receiver) and the visible one (behind it, by less than a code near the line). Screen
+    // points as (along the cut from a, across it), texels.
     const glm::vec2 along = (b - a) / screen_length;
     const glm::vec2 in(-along.y, along.x);
-    const float k = kContactStripTexels;
-    const glm::vec2 corners[4] = {a - (along + in) * k, b + (along - in) * k, b + (along + in) * k,
-                                  a + (in - along) * k};
-    std::array<GrVertex, 4> strip;
-    bool placed = true;
-    for (int i = 0; i < 4 && placed; ++i) {
-      float w_receiver = 0.0f, w_caster = 0.0f;
-      placed = w_on_plane(corners[i], c.receiver_normal, c.a, w_receiver) &&
-               w_on_plane(corners[i], c.caster_normal, c.a, w_caster);
-      // A few W-buffer codes (4096 an octave) nearer than both planes, and no nearer than
-      // depth_oow's unit (1/W at most 1).
-      const float w = std::max(std::min(w_receiver, w_caster) * (1.0f - 2e-3f),
-                               0.5f * std::max(view.caster_front, 1e-3f));
-      std::memset(&strip[static_cast<std::size_t>(i)], 0, sizeof(GrVertex));
-      strip[static_cast<std::size_t>(i)].x = corners[i].x;
-      strip[static_cast<std::size_t>(i)].y = corners[i].y;
-      strip[static_cast<std::size_t>(i)].oow = depth_oow(view, w);
+    auto at = [&](float s, float d) { return a + along * s + in * d; };
+    // The rays on a grid over the strip and a filter's reach around it: those that meet a
+    // receiver point the camera may see in the caster's shadow (contact_strip_rays.h).
+    const float margin = k + reach;
+    const int columns = static_cast<int>(std::ceil((screen_length + 2.0f * margin) / step)) + 1;
+    const int rows = static_cast<int>(std::ceil(2.0f * margin / step)) + 1;
+    const glm::vec2 ends[4] = {at(-margin, -margin), at(screen_length + margin, margin),
+                               at(-margin, margin), at(screen_length + margin, -margin)};
+    rays.select(glm::min(glm::min(ends[0], ends[1]), glm::min(ends[2], ends[3])),
+                glm::max(glm::max(ends[0], ends[1]), glm::max(ends[2], ends[3])));
+    std::vector<glm::vec2> shadowed;  // (along, across) of those rays
+    for (int i = 0; i < columns; ++i) {
+      for (int j = 0; j < rows; ++j) {
+        const float s = -margin + step * static_cast<float>(i);
+        const float d = -margin + step * static_cast<float>(j);
+        if (rays.shadowed_outside(at(s, d))) shadowed.emplace_back(s, d);
+      }
     }
-    if (placed) strips.push_back(strip);
+    // The strip in pieces about a texel long, each side of the cut apart: a side of a piece is
+    // kept when no such ray lies within the filter's reach of it. A run of pieces that keep the
+    // same sides is one quad.
+    const int pieces = std::max(1, static_cast<int>(std::ceil(screen_length + 2.0f * k)));
+    const float piece = (screen_length + 2.0f * k) / static_cast<float>(pieces);
+    auto sides = [&](int p) {  // bit 0: the side across < 0 kept, bit 1: the other
+      const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
+      int kept = 0;
+      for (int side = 0; side < 2; ++side) {
+        const float d_low = side == 0 ? -k : 0.0f, d_high = side == 0 ? 0.0f : k;
+        if (std::none_of(shadowed.begin(), shadowed.end(), [&](const glm::vec2 &q) {
+              return q.x >= s_low - reach && q.x <= s_high + reach && q.y >= d_low - reach &&
+                     q.y <= d_high + reach;
+            })) {
+          kept |= 1 << side;
+        }
+      }
+      return kept;
+    };
+    for (int first = 0; first < pieces;) {
+      const int kept = sides(first);
+      int last = first;
+      while (last + 1 < pieces && sides(last + 1) == kept) ++last;
+      const float s_low = -k + piece * static_cast<float>(first);
+      const float s_high = -k + piece * static_cast<float>(last + 1);
+      first = last + 1;
+      if (kept == 0) continue;
+      const float d_low = kept & 1 ? -k : 0.0f, d_high = kept & 2 ? k : 0.0f;
+      const glm::vec2 corners[4] = {at(s_low, d_low), at(s_high, d_low), at(s_high, d_high),
+                                    at(s_low, d_high)};
+      std::array<GrVertex, 4> strip;
+      bool placed = true;
+      for (int i = 0; i < 4 && placed; ++i) {
+        float w_receiver = 0.0f, w_caster = 0.0f;
+        placed = w_on_plane(corners[i], c.receiver_normal, c.a, w_receiver) &&
+                 w_on_plane(corners[i], c.caster_normal, c.a, w_caster);
+        // A few W-buffer codes (4096 an octave) nearer than both planes, and no nearer than
+        // depth_oow's unit (1/W at most 1).
+        const float w = std::max(std::min(w_receiver, w_caster) * (1.0f - 2e-3f),
+                                 0.5f * std::max(view.caster_front, 1e-3f));
+        std::memset(&strip[static_cast<std::size_t>(i)], 0, sizeof(GrVertex));
+        strip[static_cast<std::size_t>(i)].x = corners[i].x;
+        strip[static_cast<std::size_t>(i)].y = corners[i].y;
+        strip[static_cast<std::size_t>(i)].oow = depth_oow(view, w);
+      }
+      if (placed) strips.push_back(strip);
+    }
   }
   return strips;
 }

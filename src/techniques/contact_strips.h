@@ -22,6 +22,8 @@
 namespace gs {
 
 struct LightView;
+struct ProjectedObject;
+struct SceneObject;
 
 // A segment (world) shared by a receiver triangle and a caster triangle that pass through each
 // other, with the unit normals (world) of the receiver's and the caster's triangle as wound.
@@ -40,8 +42,14 @@ constexpr float kContactStripTexels = 1.5f;
 // light's screen of `view`, each a quad a little nearer the light than the caster's triangle
 // (and the receiver's) at its corners, so the caster fails step 1's depth test there. A strip
 // keeps only that triangle's plane out: a farther part of the caster in front of the receiver
-// still shadows it.
+// still shadows it. Only the parts of a strip (pieces about a texel long, each side of the cut
+// apart) with no point of `receiver` within the filter's reach that the camera (at `camera`,
+// world) may see in `caster`'s shadow outside it are kept (contact_strip_rays.h): a strip
+// lights no receiver point the caster shadows.
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
-                                                    const std::vector<ContactSegment> &contacts);
+                                                    const std::vector<ContactSegment> &contacts,
+                                                    const SceneObject &caster,
+                                                    const ProjectedObject &receiver,
+                                                    const glm::vec3 &camera);
 
 }  // namespace gs

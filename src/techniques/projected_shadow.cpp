@@ -163,7 +163,9 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             draw = shared->second;
             if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
             if (masked && draw.closed) {
-              job.view.contact_strips = contact_strips(job.view, pierced->contacts);
+              job.view.contact_strips =
+                  contact_strips(job.view, pierced->contacts, scene.objects[caster],
+                                 frame.objects[pierced->receiver], scene.camera.position);
             }
           }
           finish_step(0, step_start);

@@ -1,0 +1,65 @@
+// The light's rays beside a contact strip (contact_strips.h), cast on the CPU against the
+// caster's triangles and the receiver's light-facing ones (world space). A strip keeps the
+// caster out of texels whose receiver points should be either lit by it (the cut's visible
+// side) or inside it (no camera sees them). But a receiver point outside the caster that the
+// caster shadows, within a filter's reach of the strip, would read the strip's texels as light:
+// beyond the line where the caster's far side meets the receiver (grazing_9507: a cylinder
+// 0.42 m across through a dune under a light 0.2 m up, whose far side meets the dune within a
+// texel of the cut: 0.013 -> 0.111% interior false light), past an end of the cut, or on a
+// farther layer of the receiver. These rays find such points that a camera can see.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace gs {
+
+struct LightView;
+struct ProjectedObject;
+struct SceneObject;
+
+class ContactStripRays {
+ public:
+  // `caster` closed (step 1 culls its faces turned from the light), `receiver` the surface that
+  // masks it, `camera` the scene camera's position (world). `view` is kept by reference.
+  ContactStripRays(const LightView &view, const SceneObject &caster,
+                   const ProjectedObject &receiver, const glm::vec3 &camera);
+
+  // Keeps only the triangles whose bounds in the light's screen (texels) meet low..high, for
+  // the rays that follow.
+  void select(const glm::vec2 &low, const glm::vec2 &high);
+
+  // Whether the light's ray through screen point p (texels) meets the receiver's mask (beyond
+  // the caster's front, as step 1 draws it) outside the caster after passing through it, on a
+  // triangle facing the camera with no caster triangle between it and the camera: a receiver
+  // point the camera may see in the caster's shadow, which no strip may light.
+  bool shadowed_outside(const glm::vec2 &p) const;
+
+ private:
+  struct Face {
+    glm::vec3 a, e1, e2;  // world: a corner and its two edges
+    bool caster = false;
+    bool light_facing = false;
+    bool camera_facing = false;
+    glm::vec2 low{-INFINITY}, high{INFINITY};  // the light's screen (texels); all of it when
+                                               // a corner lies behind the light
+  };
+  struct Hit {
+    float t;  // along the ray from the light, 1 at its point at NDC depth 0.5
+    const Face *face;
+  };
+  void add(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c, bool caster);
+  // Whether a caster triangle lies between world point `point` and the camera.
+  bool hidden_from_camera(const glm::vec3 &point) const;
+
+  const LightView &view_;
+  glm::vec3 camera_;
+  glm::mat4 light_clip_, clip_to_world_;
+  std::vector<Face> faces_;
+  std::vector<const Face *> selected_;
+  mutable std::vector<Hit> hits_;
+};
+
+}  // namespace gs
