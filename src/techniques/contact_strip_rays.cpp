@@ -33,33 +33,50 @@ bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 
 }  // namespace
 
 ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &caster,
-                                   const ProjectedObject &receiver, const glm::vec3 &camera)
-    : view_(view), camera_(camera), light_clip_(view.projection * view.view),
-      clip_to_world_(glm::inverse(light_clip_)) {
+                                   const ProjectedObject &receiver, const glm::vec3 &camera,
+                                   const glm::mat4 &camera_clip)
+    : view_(view), camera_(camera), camera_clip_(camera_clip),
+      light_clip_(view.projection * view.view), clip_to_world_(glm::inverse(light_clip_)) {
   const Mesh &mesh = caster_mesh(caster);
   std::vector<glm::vec3> world(mesh.positions.size());
+  std::vector<glm::vec4> clip(world.size()), camera_points(world.size());
   for (std::size_t i = 0; i < world.size(); ++i) {
     world[i] = glm::vec3(caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    clip[i] = light_clip_ * glm::vec4(world[i], 1.0f);
+    camera_points[i] = camera_clip_ * glm::vec4(world[i], 1.0f);
   }
-  for (const glm::uvec3 &t : mesh.triangles) add(world[t.x], world[t.y], world[t.z], true);
+  for (const glm::uvec3 &t : mesh.triangles) add(world, clip, camera_points, t, true);
+  clip.resize(receiver.world.size());
+  for (std::size_t i = 0; i < clip.size(); ++i) {
+    clip[i] = light_clip_ * glm::vec4(receiver.world[i], 1.0f);
+  }
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-    add(receiver.world[t.x], receiver.world[t.y], receiver.world[t.z], false);
+    add(receiver.world, clip, {}, t, false);
   }
 }
 
-void ContactStripRays::add(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c,
+void ContactStripRays::add(const std::vector<glm::vec3> &world, const std::vector<glm::vec4> &clip,
+                           const std::vector<glm::vec4> &camera, const glm::uvec3 &t,
                            bool caster) {
+  const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
   const glm::vec3 normal = glm::cross(b - a, c - a);  // as wound: outward, faces culled behind
   Face f{a, b - a, c - a, caster, glm::dot(normal, view_.position - a) > 0.0f,
          glm::dot(normal, camera_ - a) > 0.0f};
   if (!caster && !f.light_facing) return;  // the receiver's mask is its light-facing surface
-  const glm::vec4 clip[3] = {light_clip_ * glm::vec4(a, 1.0f), light_clip_ * glm::vec4(b, 1.0f),
-                             light_clip_ * glm::vec4(c, 1.0f)};
-  if (clip[0].w > 0.0f && clip[1].w > 0.0f && clip[2].w > 0.0f) {
+  const glm::vec4 &p = clip[t.x], &q = clip[t.y], &r = clip[t.z];
+  if (p.w > 0.0f && q.w > 0.0f && r.w > 0.0f) {
     f.low = glm::vec2(INFINITY), f.high = glm::vec2(-INFINITY);
-    for (const glm::vec4 &p : clip) {
-      const GrVertex v = to_screen(p, view_.size, view_.size);
-      f.low = glm::min(f.low, glm::vec2(v.x, v.y)), f.high = glm::max(f.high, glm::vec2(v.x, v.y));
+    for (const glm::vec4 *v : {&p, &q, &r}) {
+      const GrVertex screen = to_screen(*v, view_.size, view_.size);
+      f.low = glm::min(f.low, glm::vec2(screen.x, screen.y));
+      f.high = glm::max(f.high, glm::vec2(screen.x, screen.y));
+    }
+  }
+  if (caster && camera[t.x].w > 0.0f && camera[t.y].w > 0.0f && camera[t.z].w > 0.0f) {
+    f.camera_low = glm::vec2(INFINITY), f.camera_high = glm::vec2(-INFINITY);
+    for (unsigned i : {t.x, t.y, t.z}) {
+      const glm::vec2 ndc = glm::vec2(camera[i]) / camera[i].w;
+      f.camera_low = glm::min(f.camera_low, ndc), f.camera_high = glm::max(f.camera_high, ndc);
     }
   }
   faces_.push_back(f);
@@ -75,10 +92,16 @@ void ContactStripRays::select(const glm::vec2 &low, const glm::vec2 &high) {
 }
 
 bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
+  const glm::vec4 p = camera_clip_ * glm::vec4(point, 1.0f);
+  const glm::vec2 ndc = glm::vec2(p) / p.w;
+  // A face's NDC bounds widened by a little more than float rounding; the test is exact.
+  const float slack = 1e-4f;
   // t runs from the point (0) to the camera (1); a triangle the point lies on is not between.
   return std::any_of(faces_.begin(), faces_.end(), [&](const Face &f) {
     float t = 0.0f;
-    return f.caster && meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < 1.0f;
+    return f.caster && !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
+                                        ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack)) &&
+           meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < 1.0f;
   });
 }
 

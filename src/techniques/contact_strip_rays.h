@@ -23,9 +23,11 @@ struct SceneObject;
 class ContactStripRays {
  public:
   // `caster` closed (step 1 culls its faces turned from the light), `receiver` the surface that
-  // masks it, `camera` the scene camera's position (world). `view` is kept by reference.
+  // masks it, `camera` the scene camera's position (world) and `camera_clip` its world to clip
+  // matrix. `view` is kept by reference.
   ContactStripRays(const LightView &view, const SceneObject &caster,
-                   const ProjectedObject &receiver, const glm::vec3 &camera);
+                   const ProjectedObject &receiver, const glm::vec3 &camera,
+                   const glm::mat4 &camera_clip);
 
   // Keeps only the triangles whose bounds in the light's screen (texels) meet low..high, for
   // the rays that follow.
@@ -45,18 +47,23 @@ class ContactStripRays {
     bool camera_facing = false;
     glm::vec2 low{-INFINITY}, high{INFINITY};  // the light's screen (texels); all of it when
                                                // a corner lies behind the light
+    // A caster face's bounds in the camera's NDC (x, y); all of it when a corner lies behind
+    // the camera: a segment from a point to the camera is one NDC point.
+    glm::vec2 camera_low{-INFINITY}, camera_high{INFINITY};
   };
   struct Hit {
     float t;  // along the ray from the light, 1 at its point at NDC depth 0.5
     const Face *face;
   };
-  void add(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c, bool caster);
+  // A triangle of vertices i, j, k of `world` (light clip `clip`, camera clip `camera`).
+  void add(const std::vector<glm::vec3> &world, const std::vector<glm::vec4> &clip,
+           const std::vector<glm::vec4> &camera, const glm::uvec3 &t, bool caster);
   // Whether a caster triangle lies between world point `point` and the camera.
   bool hidden_from_camera(const glm::vec3 &point) const;
 
   const LightView &view_;
   glm::vec3 camera_;
-  glm::mat4 light_clip_, clip_to_world_;
+  glm::mat4 camera_clip_, light_clip_, clip_to_world_;
   std::vector<Face> faces_;
   std::vector<const Face *> selected_;
   mutable std::vector<Hit> hits_;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 namespace gs {
 
@@ -17,13 +18,14 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,
                                                     const SceneObject &caster,
                                                     const ProjectedObject &receiver,
-                                                    const glm::vec3 &camera) {
+                                                    const glm::vec3 &camera,
+                                                    const glm::mat4 &camera_clip) {
   std::vector<std::array<GrVertex, 4>> strips;
   if (contacts.empty()) return strips;
   const glm::mat4 light_clip = view.projection * view.view;
   const glm::mat4 clip_to_world = glm::inverse(light_clip);
   const float size = static_cast<float>(view.size);
-  ContactStripRays rays(view, caster, receiver, camera);
+  std::optional<ContactStripRays> rays;  // made for the first strip that needs its rays
   // The light clip w where the light's ray through a screen point (texels) meets a world plane;
   // false when it meets it behind the light or not at all.
   auto w_on_plane = [&](const glm::vec2 &screen, const glm::vec3 &normal, const glm::vec3 &point,
@@ -60,42 +62,48 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     const glm::vec2 along = (b - a) / screen_length;
     const glm::vec2 in(-along.y, along.x);
     auto at = [&](float s, float d) { return a + along * s + in * d; };
-    // The rays on a grid over the strip and a filter's reach around it: those that meet a
-    // receiver point the camera may see in the caster's shadow (contact_strip_rays.h).
+    // The strip in pieces about a texel long, each side of the cut apart. The rays on a grid
+    // over the strip and a filter's reach around it find receiver points the camera may see in
+    // the caster's shadow (contact_strip_rays.h): a side of a piece is kept when no such ray
+    // lies within the filter's reach of it. A ray is cast only while a side it would drop is
+    // still kept.
+    const int pieces = std::max(1, static_cast<int>(std::ceil(screen_length + 2.0f * k)));
+    const float piece = (screen_length + 2.0f * k) / static_cast<float>(pieces);
+    std::vector<int> kept_sides(static_cast<std::size_t>(pieces), 3);  // bit 0: across < 0
     const float margin = k + reach;
     const int columns = static_cast<int>(std::ceil((screen_length + 2.0f * margin) / step)) + 1;
     const int rows = static_cast<int>(std::ceil(2.0f * margin / step)) + 1;
     const glm::vec2 ends[4] = {at(-margin, -margin), at(screen_length + margin, margin),
                                at(-margin, margin), at(screen_length + margin, -margin)};
-    rays.select(glm::min(glm::min(ends[0], ends[1]), glm::min(ends[2], ends[3])),
+    if (!rays) rays.emplace(view, caster, receiver, camera, camera_clip);
+    rays->select(glm::min(glm::min(ends[0], ends[1]), glm::min(ends[2], ends[3])),
                 glm::max(glm::max(ends[0], ends[1]), glm::max(ends[2], ends[3])));
-    std::vector<glm::vec2> shadowed;  // (along, across) of those rays
     for (int i = 0; i < columns; ++i) {
+      const float s = -margin + step * static_cast<float>(i);
+      // The pieces within reach of this column: s_low - reach <= s <= s_high + reach.
+      // One more each way against rounding; the test below is exact.
+      const int first = std::max(0, static_cast<int>(std::ceil((s - reach + k) / piece)) - 2);
+      const int last = std::min(pieces - 1, static_cast<int>(std::floor((s + reach + k) / piece)) + 1);
       for (int j = 0; j < rows; ++j) {
-        const float s = -margin + step * static_cast<float>(i);
         const float d = -margin + step * static_cast<float>(j);
-        if (rays.shadowed_outside(at(s, d))) shadowed.emplace_back(s, d);
-      }
-    }
-    // The strip in pieces about a texel long, each side of the cut apart: a side of a piece is
-    // kept when no such ray lies within the filter's reach of it. A run of pieces that keep the
-    // same sides is one quad.
-    const int pieces = std::max(1, static_cast<int>(std::ceil(screen_length + 2.0f * k)));
-    const float piece = (screen_length + 2.0f * k) / static_cast<float>(pieces);
-    auto sides = [&](int p) {  // bit 0: the side across < 0 kept, bit 1: the other
-      const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
-      int kept = 0;
-      for (int side = 0; side < 2; ++side) {
-        const float d_low = side == 0 ? -k : 0.0f, d_high = side == 0 ? 0.0f : k;
-        if (std::none_of(shadowed.begin(), shadowed.end(), [&](const glm::vec2 &q) {
-              return q.x >= s_low - reach && q.x <= s_high + reach && q.y >= d_low - reach &&
-                     q.y <= d_high + reach;
-            })) {
-          kept |= 1 << side;
+        const int near_sides = (d <= reach ? 1 : 0) | (d >= -reach ? 2 : 0);
+        int dropped = 0;  // the sides this ray would drop, of pieces first..last
+        for (int p = first; p <= last; ++p) {
+          const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
+          if (s >= s_low - reach && s <= s_high + reach) {
+            dropped |= kept_sides[static_cast<std::size_t>(p)] & near_sides;
+          }
+        }
+        if (dropped == 0 || !rays->shadowed_outside(at(s, d))) continue;
+        for (int p = first; p <= last; ++p) {
+          const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
+          if (s >= s_low - reach && s <= s_high + reach) {
+            kept_sides[static_cast<std::size_t>(p)] &= ~near_sides;
+          }
         }
       }
-      return kept;
-    };
+    }
+    auto sides = [&](int p) { return kept_sides[static_cast<std::size_t>(p)]; };
     for (int first = 0; first < pieces;) {
       const int kept = sides(first);
       int last = first;

@@ -44,12 +44,13 @@ constexpr float kContactStripTexels = 1.5f;
 // keeps only that triangle's plane out: a farther part of the caster in front of the receiver
 // still shadows it. Only the parts of a strip (pieces about a texel long, each side of the cut
 // apart) with no point of `receiver` within the filter's reach that the camera (at `camera`,
-// world) may see in `caster`'s shadow outside it are kept (contact_strip_rays.h): a strip
+// world; `camera_clip` world to its clip space) may see in `caster`'s shadow outside it are kept (contact_strip_rays.h): a strip
 // lights no receiver point the caster shadows.
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,
                                                     const SceneObject &caster,
                                                     const ProjectedObject &receiver,
-                                                    const glm::vec3 &camera);
+                                                    const glm::vec3 &camera,
+                                                    const glm::mat4 &camera_clip);
 
 }  // namespace gs

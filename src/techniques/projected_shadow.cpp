@@ -165,7 +165,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             if (masked && draw.closed) {
               job.view.contact_strips =
                   contact_strips(job.view, pierced->contacts, scene.objects[caster],
-                                 frame.objects[pierced->receiver], scene.camera.position);
+                                 frame.objects[pierced->receiver], scene.camera.position,
+                                 frame.view_projection);
             }
           }
           finish_step(0, step_start);
