@@ -20,14 +20,29 @@ CLI::Validator finite_number() {
       "FINITE");
 }
 
+std::vector<int> shadow_sizes() { return {32, 64, 128, 256, 512, 1024, 2048, 4096}; }
+
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size) {
   command.add_option("--technique", choice.name, "shadow technique")
       ->check(CLI::IsMember(technique_names()))
       ->capture_default_str();
   command.add_option("--shadow-size", shadow_size,
-                     "shadow map side in texels; 512 is drawn as four 256x256 textures (a Voodoo 1 limit)")
-      ->check(CLI::IsMember({32, 64, 128, 256, 512}))
+                     "shadow map side in texels, 32..4096; the projected techniques draw at most 512 "
+                     "(four 256x256 textures, a Voodoo 1 limit), the depth map up to 4096")
+      ->check(CLI::IsMember(shadow_sizes()))
       ->capture_default_str();
+  // A depth-map refusal may name a size above 512 ("size 1024 would be accepted"); the projected
+  // techniques cannot draw one, so the pair is refused as a command line before anything runs.
+  command.parse_complete_callback([&choice, &shadow_size] {
+    const bool projected = choice.name == "projected" || choice.name == "projected-chroma";
+    if (projected && shadow_size > kLargestProjectedSize) {
+      throw CLI::ValidationError(
+          "--shadow-size", std::to_string(shadow_size) + ": the " + choice.name +
+                               " technique draws at most " + std::to_string(kLargestProjectedSize) +
+                               " texels (four 256x256 Voodoo textures); sizes up to 4096 are for "
+                               "--technique depth-map");
+    }
+  });
   command.add_flag("--direct-path", choice.direct_path,
                    "step 1 renders straight into texture memory instead of the back buffer + LFB read");
   command.add_flag("--point", choice.point, "point-sample the shadow texture (default bilinear)");

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace gs::cli {
 
@@ -25,6 +26,11 @@ struct TechniqueChoice {
 // A check for a number option that refuses "nan" and "inf", to run before CLI::Range (which
 // lets NaN through: every comparison with it is false).
 CLI::Validator finite_number();
+
+// The sides --shadow-size takes: powers of two 32..4096. A scene file's shadow_size stays within
+// 32..512 (docs/scene_format.md), what every technique draws; only the depth map goes beyond.
+std::vector<int> shadow_sizes();
+constexpr int kLargestProjectedSize = 512;
 
 void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shadow_size);
 TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_size);

@@ -79,8 +79,10 @@ Command add_render_command(CLI::App &app) {
   render->add_flag("--allow-missing-shadows", o->allow_missing_shadows,
                    "exit 0 even when the technique cannot cast a shadow the scene has (it says which)");
   add_technique_options(*render, o->choice, o->shadow_size);
-  render->get_option("--shadow-size")->description("shadow texture side (default: each light's shadow_size)");
-  render->get_option("--shadow-size")->check(CLI::IsMember({0, 32, 64, 128, 256, 512}));
+  render->get_option("--shadow-size")
+      ->description("shadow map side, 32..4096 (default: each light's shadow_size); the projected "
+                    "techniques draw at most 512, as four 256x256 textures");
+
   return {render, [o] { return run_render(*o); }};
 }
 

@@ -168,8 +168,8 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
   }
   const float cell = static_cast<float>(view.size) / LightView::kCells;  // texels
   const float fine_cell = static_cast<float>(view.size) / LightView::kFineCells;  // texels
-  auto cell_index = [&](float texels) {
-    return std::clamp(static_cast<int>(std::floor(texels / cell)), 0, LightView::kCells - 1);
+  auto cell_index = [&](float texels) {  // truncated as in LightView::fine_cell_of
+    return std::clamp(static_cast<int>(texels / cell), 0, LightView::kCells - 1);
   };
   auto fine_index = [&](float texels) { return view.fine_cell_of(texels); };
   // Marks the cells a drawn triangle's bounding box covers, with its nearest depth.

@@ -95,7 +95,8 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4
 }
 
 int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
-  const float cell = std::floor((ndc - low_[axis]) / cell_side_[axis]);
+  // Clamped, then truncated: the same cell as floored then clamped (they differ only below 0).
+  const float cell = (ndc - low_[axis]) / cell_side_[axis];
   return static_cast<int>(std::clamp(cell, 0.0f, static_cast<float>(kGrid - 1)));
 }
 

@@ -11,8 +11,33 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 namespace gs {
+
+std::vector<ContactSegment> contact_segments(std::vector<ContactPoint> points) {
+  const auto pair = [](const ContactPoint &x) {
+    return std::make_pair(x.receiver_triangle, x.caster_triangle);
+  };
+  std::sort(points.begin(), points.end(),
+            [&](const ContactPoint &x, const ContactPoint &y) { return pair(x) < pair(y); });
+  std::vector<ContactSegment> contacts;
+  for (std::size_t i = 0; i < points.size();) {
+    std::size_t j = i + 1;
+    while (j < points.size() && pair(points[j]) == pair(points[i])) ++j;
+    ContactSegment contact{points[i].point, points[i].point, points[i].receiver_normal,
+                           points[i].caster_normal};
+    for (std::size_t k = i; k < j; ++k) {
+      for (std::size_t l = k + 1; l < j; ++l) {
+        const glm::vec3 &u = points[k].point, &v = points[l].point;
+        if (glm::distance(u, v) > glm::distance(contact.a, contact.b)) contact.a = u, contact.b = v;
+      }
+    }
+    if (contact.a != contact.b) contacts.push_back(contact);
+    i = j;
+  }
+  return contacts;
+}
 
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,

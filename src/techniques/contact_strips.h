@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace gs {
@@ -32,6 +33,19 @@ struct ContactSegment {
   glm::vec3 receiver_normal;
   glm::vec3 caster_normal;
 };
+
+// A point (world) where an edge of one of a receiver triangle and a caster triangle passes
+// through the other, with the two triangles' indices (any numbering that tells triangles apart)
+// and their unit normals (world) as wound.
+struct ContactPoint {
+  std::size_t receiver_triangle, caster_triangle;
+  glm::vec3 point;
+  glm::vec3 receiver_normal, caster_normal;
+};
+
+// Per pair of triangles with crossing points, the segment they share: its ends are the pair's
+// two points farthest apart (a pair with a single point gives none). In order of the pairs.
+std::vector<ContactSegment> contact_segments(std::vector<ContactPoint> points);
 
 // Texels from the line the strip reaches on each side (and beyond each end): bilinear
 // filtering reads texel centres less than one texel away on each axis, and the half texel more

@@ -7,6 +7,7 @@
 #include "techniques/depth_map_lookup.h"
 #include "techniques/light_beam.h"
 #include "techniques/projection.h"
+#include "techniques/triangle_bvh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -21,33 +22,11 @@ namespace {
 
 using glm::dvec3;
 
-// The nearest hit (parameter along o + t d, in (low, high)) of the ray with the triangles
-// `corners` (three a triangle), both sides; false when there is none. `hit`: its triangle.
-bool nearest_hit(const dvec3 &o, const dvec3 &d, const std::vector<dvec3> &corners, double low,
-                 double &high, std::size_t &hit) {
-  bool found = false;
-  for (std::size_t k = 0; k + 2 < corners.size(); k += 3) {
-    const dvec3 e1 = corners[k + 1] - corners[k], e2 = corners[k + 2] - corners[k];
-    const dvec3 p = glm::cross(d, e2);
-    const double det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-300) continue;
-    const dvec3 s = o - corners[k];
-    const double u = glm::dot(s, p) / det;
-    if (u < 0.0 || u > 1.0) continue;
-    const dvec3 q = glm::cross(s, e1);
-    const double v = glm::dot(d, q) / det;
-    if (v < 0.0 || u + v > 1.0) continue;
-    const double t = glm::dot(e2, q) / det;
-    if (t > low && t < high) high = t, hit = k / 3, found = true;
-  }
-  return found;
-}
-
-// A surface as step 1 draws it into the map: its triangles as drawn (facet-pushed, three corners
-// each, world) with each one's slope term (glPolygonOffset's factor times its largest window
-// depth change per texel), and as they are (the bounded copy slides these back).
+// A surface as step 1 draws it into the map: its triangles as drawn (facet-pushed, world) with
+// each one's slope term (glPolygonOffset's factor times its largest window depth change per
+// texel), and as they are (the bounded copy slides these back).
 struct DrawnSurface {
-  std::vector<dvec3> pushed, original;
+  TriangleBvh pushed, original;
   std::vector<double> slope_term;
 };
 
@@ -73,12 +52,13 @@ class MapReplay {
     const std::vector<glm::vec3> drawn =
         pushed ? facet_pushed_positions(mesh, frustum, light_, side_) : mesh.position;
     DrawnSurface surface;
+    std::vector<dvec3> pushed_corners, original_corners;  // three a triangle (world)
     for (const glm::uvec3 &t : mesh.object->mesh.triangles) {
       glm::dvec4 corner[3];  // S, T (texels), r, q of each corner, scaled to unit size
       for (int k = 0; k < 3; ++k) {
-        surface.pushed.push_back(dvec3(drawn[t[k]]));
-        surface.original.push_back(dvec3(mesh.position[t[k]]));
-        const glm::dvec4 m = to_map_ * glm::dvec4(surface.pushed.back(), 1.0);
+        pushed_corners.push_back(dvec3(drawn[t[k]]));
+        original_corners.push_back(dvec3(mesh.position[t[k]]));
+        const glm::dvec4 m = to_map_ * glm::dvec4(pushed_corners.back(), 1.0);
         const glm::dvec4 h(m.x * side_, m.y * side_, m.z, m.w);
         const double scale = std::max({std::abs(h.x), std::abs(h.y), std::abs(h.w), 1e-30});
         corner[k] = h / scale;
@@ -99,6 +79,8 @@ class MapReplay {
       }
       surface.slope_term.push_back(term);
     }
+    surface.pushed = TriangleBvh(std::move(pushed_corners));
+    surface.original = TriangleBvh(std::move(original_corners));
     surfaces_.push_back(std::move(surface));
   }
 
@@ -143,11 +125,11 @@ class MapReplay {
     for (const DrawnSurface &surface : surfaces_) {
       double t = INFINITY;
       std::size_t hit = 0;
-      if (nearest_hit(o, d, surface.pushed, 0.0, t, hit)) {
+      if (surface.pushed.nearest(o, d, 0.0, t, hit)) {
         nearest = std::min(nearest, depth_of(o + d * t) + surface.slope_term[hit] + units_);
       }
       t = INFINITY;
-      if (bounded_ && nearest_hit(o, d, surface.original, 0.0, t, hit)) {
+      if (bounded_ && surface.original.nearest(o, d, 0.0, t, hit)) {
         const dvec3 p = o + d * t;
         const double light_depth = std::max(-(view_ * glm::dvec4(p, 1.0)).z, 0.0);
         const double back = options_.depth_bias_bound * texel_per_metre_ * light_depth;
@@ -195,9 +177,9 @@ bool plane_cut(const dvec3 &a, const dvec3 &b, const dvec3 &c, const dvec3 &orig
   return glm::length(q - p) > touching;
 }
 
-// An object's triangles (world, three corners each) and their box, for rays along segments.
+// An object's triangles (world) and their box, for rays along segments.
 struct RayBody {
-  std::vector<dvec3> corners;
+  TriangleBvh triangles;
   dvec3 low{INFINITY}, high{-INFINITY};
   bool casts = false;
 };
@@ -215,9 +197,7 @@ bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
     from = std::max(from, near), to = std::min(to, far);
     if (from > to) return false;
   }
-  double t = 1.0 - 1e-5;
-  std::size_t hit = 0;
-  return nearest_hit(o, d, body.corners, 1e-9, t, hit);
+  return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5);
 }
 
 }  // namespace
@@ -231,13 +211,15 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
   std::vector<RayBody> bodies(meshes.size());
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     bodies[m].casts = meshes[m].object->casts_shadow;
+    std::vector<dvec3> corners;  // three a triangle (world)
     for (const glm::uvec3 &u : meshes[m].object->mesh.triangles) {
       for (int k = 0; k < 3; ++k) {
         const dvec3 p(meshes[m].position[u[k]]);
-        bodies[m].corners.push_back(p);
+        corners.push_back(p);
         bodies[m].low = glm::min(bodies[m].low, p), bodies[m].high = glm::max(bodies[m].high, p);
       }
     }
+    bodies[m].triangles = TriangleBvh(std::move(corners));
   }
   FootprintSpace space;  // for the screen positions
   space.camera_clip = camera_projection(scene.camera, scene.width, scene.height) *

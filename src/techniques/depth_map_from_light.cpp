@@ -135,6 +135,7 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
   std::optional<float> largest_edge_error;
   if (std::isinf(options_.depth_map_largest_footprint_px)) largest_edge_error = INFINITY;
   float edge_error_taken = 0.0f;  // by the shadows cast so far
+  EdgeErrorEstimate edge_error_of_all;  // by every shadow so far, at each doubling of its map
   const EdgeLookup lookup = options_.depth_map_linear ? EdgeLookup::kBilinear : EdgeLookup::kNearest;
   const GLfloat lit_border[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // depth 1: outside the map is lit
   if (options_.depth_map_bits != 16 && options_.depth_map_bits != 24) {
@@ -192,27 +193,30 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
       footprint.edge_error.add(contact.pixels);
       const float pixels = footprint.coarsest.pixels_per_texel;
       texel_footprint_px_ = std::max(texel_footprint_px_, pixels);
-      if (pixels > largest_footprint) {
-        drawn[footprint.caster] = false;
-        errors.push_back(texel_footprint_error(scene_, light, footprint.caster,
-                                               footprint.coarsest.receiver, pixels,
-                                               largest_footprint, side, kLargestMap));
-        warnings.push_back(errors.back());
-        continue;
-      }
       // The error along its shadow's edges, against what the frame's shadows before it left.
       EdgeErrorEstimate within_budget = footprint.edge_error;
       for (float &estimate : within_budget.pixels) estimate += edge_error_taken;
       if (!largest_edge_error && footprint.edge_error.pixels[0] > 0.0f) {
         largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene_, project_scene(scene_));
       }
-      if (largest_edge_error && within_budget.pixels[0] > *largest_edge_error) {
+      // A refusal names a larger size only where this shadow's error fits beside that of every
+      // shadow before it, cast or refused: they may all be cast at that size.
+      EdgeErrorEstimate at_larger_sizes = footprint.edge_error;
+      at_larger_sizes.add(edge_error_of_all);
+      edge_error_of_all.add(footprint.edge_error);
+      const bool too_coarse = pixels > largest_footprint;
+      if (too_coarse || (largest_edge_error && within_budget.pixels[0] > *largest_edge_error)) {
         drawn[footprint.caster] = false;
-        // The estimate is made up to 8 times the side: the size it names lies within that.
-        errors.push_back(shadow_edge_error_message(
-            scene_, light, footprint.caster, footprint.edge_error_receiver, edge_error_taken,
-            within_budget, *largest_edge_error, side,
-            std::min(kLargestMap, side << (EdgeErrorEstimate::kSizes - 1))));
+        const AcceptedSize accepted = smallest_accepted_size(
+            side, kLargestMap, pixels, largest_footprint, at_larger_sizes, largest_edge_error);
+        errors.push_back(
+            too_coarse ? texel_footprint_error(scene_, light, footprint.caster,
+                                               footprint.coarsest.receiver, pixels,
+                                               largest_footprint, side, accepted_size_words(accepted))
+                       : shadow_edge_error_message(scene_, light, footprint.caster,
+                                                   footprint.edge_error_receiver, edge_error_taken,
+                                                   within_budget, *largest_edge_error, side,
+                                                   accepted));
         warnings.push_back(errors.back());
         continue;
       }

@@ -13,7 +13,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <tuple>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -104,11 +105,11 @@ TriangleGrid sort_triangles(const std::vector<glm::vec3> &world,
   return grid;
 }
 
-// The receiver's outline from the light: the edges (world) of its light-facing triangles that
-// no other light-facing triangle shares (by position), sorted, so that a lookup is a search; and
-// those triangles' corners in the light's screen (texels), to find what lies beyond an edge.
+// The receiver's outline from the light: the edges of its light-facing triangles that no other
+// light-facing triangle shares (by world position), as pairs of position ids, sorted, so that a
+// lookup is a search; and those triangles' corners in the light's screen (texels), to find what
+// lies beyond an edge.
 struct Outline {
-  using Edge = std::pair<glm::vec3, glm::vec3>;
   struct Lit {
     glm::vec3 corner[3];  // world
     glm::vec2 screen[3];  // light screen, texels
@@ -118,23 +119,24 @@ struct Outline {
   // Light screen texels: within this of the view, float rounding in a separating-axis test
   // is below 1e-3 texel.
   static constexpr float kNear = 1e4f;
-  std::vector<Edge> edges;
+  // Per vertex of the receiver, an id equal to another vertex's exactly where their world
+  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids; ids run
+  // from 0 up to id_count.
+  std::vector<std::uint32_t> position_id;
+  std::uint32_t id_count = 0;
+  // The outline's edges filed under their lower id: its higher ids at higher[start[id]] up to
+  // higher[start[id + 1]].
+  std::vector<std::uint32_t> start, higher;
   std::vector<Lit> lit;
-  static bool less(const glm::vec3 &p, const glm::vec3 &q) {
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  std::uint64_t key(unsigned p, unsigned q) const {
+    const std::uint64_t a = position_id[p], b = position_id[q];
+    return a < b ? a << 32 | b : b << 32 | a;
   }
-  static Edge key(const glm::vec3 &p, const glm::vec3 &q) {
-    return less(p, q) ? Edge(p, q) : Edge(q, p);
-  }
-  // A function object, not a function: the sort and the searches call it inline.
-  struct EdgeLess {
-    bool operator()(const Edge &a, const Edge &b) const {
-      return less(a.first, b.first) || (!less(b.first, a.first) && less(a.second, b.second));
-    }
-  };
-  static constexpr EdgeLess edge_less{};
-  bool contains(const glm::vec3 &p, const glm::vec3 &q) const {
-    return std::binary_search(edges.begin(), edges.end(), key(p, q), edge_less);
+  // Whether the edge between vertices p and q of the receiver lies on the outline.
+  bool contains(unsigned p, unsigned q) const {
+    const std::uint64_t edge = key(p, q);
+    const auto first = higher.begin() + start[edge >> 32], last = higher.begin() + start[(edge >> 32) + 1];
+    return std::find(first, last, static_cast<std::uint32_t>(edge)) != last;
   }
   // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
   // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
@@ -171,16 +173,49 @@ struct Outline {
   }
 };
 
+// Per position of `world` (world space), an id shared exactly by the positions that compare
+// equal to it as floats (0 and -0 alike, infinities too; a NaN joins none), counted up in order
+// of first appearance; `count` is the number of ids. Through a hash table of the positions' bits.
+std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world,
+                                              std::uint32_t &count) {
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * world.size()) ++bits;
+  constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
+  std::vector<std::uint32_t> slot(std::size_t{1} << bits, kEmpty);  // a vertex with the position
+  std::vector<std::uint32_t> id(world.size());
+  count = 0;
+  for (std::uint32_t i = 0; i < world.size(); ++i) {
+    const glm::vec3 p = world[i] + glm::vec3(0.0f);  // -0 as 0, so equal positions hash alike
+    std::uint32_t x, y, z;
+    std::memcpy(&x, &p.x, 4), std::memcpy(&y, &p.y, 4), std::memcpy(&z, &p.z, 4);
+    const std::uint64_t hash =
+        ((std::uint64_t{x} << 32 | y) * 0x9E3779B97F4A7C15u) ^ (std::uint64_t{z} * 0xC2B2AE3D27D4EB4Fu);
+    for (std::size_t s = hash >> (64 - bits);; s = (s + 1) & ((std::size_t{1} << bits) - 1)) {
+      if (slot[s] == kEmpty) {
+        slot[s] = i;
+        id[i] = count++;
+        break;
+      }
+      if (world[slot[s]] == world[i]) {
+        id[i] = id[slot[s]];
+        break;
+      }
+    }
+  }
+  return id;
+}
+
 Outline outline_of(const LightView &view, const ProjectedObject &receiver,
                    const std::vector<glm::vec4> &clip) {
-  std::vector<Outline::Edge> all;
   Outline outline;
+  outline.position_id = world_position_ids(receiver.world, outline.id_count);
+  std::vector<std::uint64_t> all;
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
     if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;
-    all.push_back(Outline::key(a, b));
-    all.push_back(Outline::key(b, c));
-    all.push_back(Outline::key(c, a));
+    all.push_back(outline.key(t.x, t.y));
+    all.push_back(outline.key(t.y, t.z));
+    all.push_back(outline.key(t.z, t.x));
     Outline::Lit lit{{a, b, c}, {}, true, glm::vec2(INFINITY), glm::vec2(-INFINITY)};
     bool near = true;
     int k = 0;
@@ -195,12 +230,24 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
     if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
     outline.lit.push_back(lit);
   }
-  std::sort(all.begin(), all.end(), Outline::edge_less);
-  for (std::size_t i = 0; i < all.size();) {
-    std::size_t j = i + 1;
-    while (j < all.size() && !Outline::edge_less(all[i], all[j])) ++j;
-    if (j == i + 1) outline.edges.push_back(all[i]);
-    i = j;
+  // The edges filed under their lower id (a counting sort), each id's few then sorted: an edge
+  // on the outline is one found once.
+  std::vector<std::uint32_t> start(outline.id_count + 1, 0), higher(all.size());
+  for (const std::uint64_t edge : all) ++start[(edge >> 32) + 1];
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) start[id + 1] += start[id];
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (const std::uint64_t edge : all) higher[next[edge >> 32]++] = static_cast<std::uint32_t>(edge);
+  outline.start.assign(outline.id_count + 1, 0);
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) {
+    const auto first = higher.begin() + start[id], last = higher.begin() + start[id + 1];
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      auto j = i + 1;
+      while (j != last && *j == *i) ++j;
+      if (j == i + 1) outline.higher.push_back(*i);
+      i = j;
+    }
+    outline.start[id + 1] = static_cast<std::uint32_t>(outline.higher.size());
   }
   return outline;
 }
@@ -271,8 +318,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
       glm::min(box_high, surface_high + margin), caster, caster_index);
   pierced.caster_crossing.assign(caster_triangles.size(), 0);
   bool any = false;
-  // Each crossing point (world) with its pair: (kept surface triangle, kept caster triangle).
-  std::vector<std::tuple<std::size_t, std::size_t, glm::vec3>> points;
+  std::vector<ContactPoint> points;  // each crossing point (world) with its pair of triangles
   // The caster's edges through the receiver's triangles, and the receiver's through the caster's.
   auto edges_through = [&](const std::vector<Triangle> &edges, const std::vector<Triangle> &faces,
                            const TriangleGrid &grid, bool edges_are_caster) {
@@ -288,8 +334,10 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
             any = true;
             const float dp = glm::dot(faces[f].normal, p - faces[f].a);
             const float dq = glm::dot(faces[f].normal, q - faces[f].a);
-            points.emplace_back(edges_are_caster ? f : e, edges_are_caster ? e : f,
-                                p + (q - p) * (dp / (dp - dq)));
+            const Triangle &kept_surface = edges_are_caster ? faces[f] : t;
+            const Triangle &kept_caster = edges_are_caster ? t : faces[f];
+            points.push_back({edges_are_caster ? f : e, edges_are_caster ? e : f,
+                              p + (q - p) * (dp / (dp - dq)), kept_surface.normal, kept_caster.normal});
           }
         });
       }
@@ -297,29 +345,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
   };
   edges_through(caster, surface, surface_grid, true);
   edges_through(surface, caster, caster_grid, false);
-  // A pair's crossing points lie on the segment the two triangles share: its ends are the two
-  // farthest apart.
-  std::sort(points.begin(), points.end(), [](const auto &x, const auto &y) {
-    return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
-  });
-  for (std::size_t i = 0; i < points.size();) {
-    std::size_t j = i + 1;
-    while (j < points.size() && std::get<0>(points[j]) == std::get<0>(points[i]) &&
-           std::get<1>(points[j]) == std::get<1>(points[i])) {
-      ++j;
-    }
-    ContactSegment contact{std::get<2>(points[i]), std::get<2>(points[i]),
-                           surface[std::get<0>(points[i])].normal,
-                           caster[std::get<1>(points[i])].normal};
-    for (std::size_t k = i; k < j; ++k) {
-      for (std::size_t l = k + 1; l < j; ++l) {
-        const glm::vec3 &u = std::get<2>(points[k]), &v = std::get<2>(points[l]);
-        if (glm::distance(u, v) > glm::distance(contact.a, contact.b)) contact.a = u, contact.b = v;
-      }
-    }
-    if (contact.a != contact.b) pierced.contacts.push_back(contact);
-    i = j;
-  }
+  pierced.contacts = contact_segments(std::move(points));
   pierced.casts = true;  // whatever lies behind, step 1's depth test decides per texel
   return any;
 }
@@ -391,8 +417,9 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
     // the view (the fan is then its three corners, in order).
     if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) continue;
     const glm::vec3 *corner[3] = {&a, &b, &c};
+    const unsigned index[3] = {t.x, t.y, t.z};
     for (int k = 0; k < 3; ++k) {
-      if (outline.contains(*corner[k], *corner[(k + 1) % 3])) {
+      if (outline.contains(index[k], index[(k + 1) % 3])) {
         draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
                  fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3]);
       }

@@ -55,6 +55,9 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
   std::optional<float> largest_edge_error;
   if (std::isinf(options.largest_texel_footprint_px)) largest_edge_error = INFINITY;
   float edge_error_taken = 0.0f;  // by the shadows cast so far
+  // Every shadow's so far, cast or refused, at each doubling of its size: a refusal names a
+  // larger size only where its error fits beside them all, since they may all be cast there.
+  EdgeErrorEstimate edge_error_of_all;
   // Step 2 of the texture step 1 drew last on the LFB path, whose drawing the renderer was left
   // to do (glideShimFlush) while the program goes on with the next texture's steps 1 and 3 and
   // the next caster's fitting: the read-back then waits only for what is left of it. Done before
@@ -275,13 +278,6 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           std::move(samples),
           kFootprintIgnoredScreenShare * static_cast<float>(scene.width) * static_cast<float>(scene.height));
       result.texel_footprint_px = std::max(result.texel_footprint_px, coarsest.pixels_per_texel);
-      if (coarsest.pixels_per_texel > largest_footprint) {
-        result.errors.push_back(texel_footprint_error(scene, light, caster, coarsest.receiver,
-                                                      coarsest.pixels_per_texel, largest_footprint,
-                                                      fitted.size, 512));  // its largest size
-        result.textures.release_from(caster_mark);  // its textures are not used
-        continue;
-      }
       // The error along the shadow's edges, over all its textures (shadow_edge_error.h).
       EdgeErrorEstimate edge_error;
       std::size_t edge_error_receiver = 0;
@@ -300,11 +296,23 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       if (!largest_edge_error && edge_error.pixels[0] > 0.0f) {
         largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene, frame);
       }
-      if (largest_edge_error && within_budget.pixels[0] > *largest_edge_error) {
-        result.errors.push_back(shadow_edge_error_message(
-            scene, light, caster, edge_error_receiver, edge_error_taken, within_budget,
-            *largest_edge_error, fitted.size, 512));  // its largest size
-        result.textures.release_from(caster_mark);
+      EdgeErrorEstimate at_larger_sizes = edge_error;
+      at_larger_sizes.add(edge_error_of_all);
+      edge_error_of_all.add(edge_error);
+      const bool too_coarse = coarsest.pixels_per_texel > largest_footprint;
+      if (too_coarse || (largest_edge_error && within_budget.pixels[0] > *largest_edge_error)) {
+        constexpr int kLargestSize = 512;  // four 256x256 textures
+        const AcceptedSize accepted =
+            smallest_accepted_size(fitted.size, kLargestSize, coarsest.pixels_per_texel,
+                                   largest_footprint, at_larger_sizes, largest_edge_error);
+        result.errors.push_back(
+            too_coarse ? texel_footprint_error(scene, light, caster, coarsest.receiver,
+                                               coarsest.pixels_per_texel, largest_footprint,
+                                               fitted.size, accepted_size_words(accepted))
+                       : shadow_edge_error_message(scene, light, caster, edge_error_receiver,
+                                                   edge_error_taken, within_budget,
+                                                   *largest_edge_error, fitted.size, accepted));
+        result.textures.release_from(caster_mark);  // its textures are not used
         continue;
       }
       edge_error_taken += edge_error.pixels[0];

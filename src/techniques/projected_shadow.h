@@ -95,10 +95,11 @@ struct LightView {
   // within reach is covered (ShadowTriangle::reaches_caster), which changes no byte.
   static constexpr int kFineCells = 128;
   std::vector<bool> covered = std::vector<bool>(kFineCells * kFineCells, false);
-  // The fine cell (column or row) holding a light-screen coordinate in texels, clamped to the grid.
+  // The fine cell (column or row) holding a light-screen coordinate in texels, clamped to the grid
+  // (truncated, not floored: the two differ only below 0, which the clamp takes to cell 0).
   int fine_cell_of(float texels) const {
     const float side = static_cast<float>(size) / kFineCells;  // texels
-    return std::clamp(static_cast<int>(std::floor(texels / side)), 0, kFineCells - 1);
+    return std::clamp(static_cast<int>(texels / side), 0, kFineCells - 1);
   }
   // Whether a covered fine cell lies within `reach` texels of the box low..high (light screen,
   // texels); true for a box that is not finite, which the callers then keep as it is.

@@ -222,6 +222,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   std::vector<glm::vec4> cut_planes;  // world: a light view plane p is transpose(view) p there
   for (const glm::vec4 &plane : view.edge_planes) cut_planes.push_back(glm::transpose(view.view) * plane);
   complete_cuts(scene.objects[caster], light.position, cut_planes, segments);
+  mark_rims(scene.objects[caster], segments);
   for (const SilhouetteSegment &segment : segments) {
     glm::vec2 low(-INFINITY), high(INFINITY);
     const glm::vec4 ends[2] = {light_clip * glm::vec4(segment.a, 1.0f),

@@ -51,8 +51,9 @@ struct LayerGrid {
   std::vector<std::size_t> start, items;
 };
 
+// Truncated, not floored: the two differ only below 0, which the clamp takes to cell 0 either way.
 int layer_cell_of(float ndc) {
-  return std::clamp(static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kLayerGrid)), 0, kLayerGrid - 1);
+  return std::clamp(static_cast<int>((ndc + 1.0f) * 0.5f * kLayerGrid), 0, kLayerGrid - 1);
 }
 
 // Barycentric weights of p in the NDC triangle; false when outside.
@@ -151,8 +152,8 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   // triangle wholly nearer the light than that in every cell it touches is never shaded with
   // this caster's shadow (receiver_coords.cpp), so what it hides needs no masking.
   constexpr int kCells = LightView::kCells;
-  auto shade_cell = [](float ndc) {
-    return std::clamp(static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kCells)), 0, kCells - 1);
+  auto shade_cell = [](float ndc) {  // truncated as in layer_cell_of
+    return std::clamp(static_cast<int>((ndc + 1.0f) * 0.5f * kCells), 0, kCells - 1);
   };
   std::vector<float> cell_nearest(kCells * kCells, INFINITY);
   for (const glm::uvec3 &t : mesh.triangles) {

@@ -4,6 +4,7 @@
 #include "techniques/shadow_edge_error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -149,10 +150,16 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     if (!(from < to)) continue;
     const glm::vec3 start = glm::mix(shadow_ends[0], shadow_ends[1], from);
     const glm::vec3 end = glm::mix(shadow_ends[0], shadow_ends[1], to);
+    // Seen from behind the lit face, the caster hides the receiver beyond its foot, but for a
+    // rim's: there the receiver beyond it is in shadow from the foot on, and seen.
+    bool beyond = false;
     if (contact &&
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
-      continue;  // the caster hides the floor beyond its lit face's foot
+      if (!segment.rim) continue;
+      beyond = true;
     }
+    // A visible true edge's band excuses the pixels next to it.
+    const bool banded = !contact || beyond;
     const glm::vec2 screen_along =
         footprint_screen_pixels(space, end) - footprint_screen_pixels(space, start);
     const float length = glm::length(screen_along);
@@ -181,7 +188,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (!contact && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
+    if (banded && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
     // along a straight edge).
     const int samples = std::clamp(static_cast<int>(std::ceil(2.0f * glm::length(texel_along))), 1, 64);
@@ -195,12 +202,13 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
-        if (!contact && per_texel * kMostStrayTexels <= excused_pixels) break;
+        if (banded && per_texel * kMostStrayTexels <= excused_pixels) break;
         const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
-        // Beyond the excused pixels of a visible edge; beside a hidden one, what leaves the
-        // caster.
-        const float stray = contact ? std::max(offset, 0.0f) * per_texel
-                                    : std::max(std::abs(offset) * per_texel - excused_pixels, 0.0f);
+        // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
+        // caster); beside a hidden one, what leaves the caster.
+        const float seen = beyond ? std::max(-offset, 0.0f) : std::abs(offset);
+        const float stray = banded ? std::max(seen * per_texel - excused_pixels, 0.0f)
+                                   : std::max(offset, 0.0f) * per_texel;
         estimate.pixels[size] += sample_length * stray;
       }
     }
@@ -261,6 +269,50 @@ void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
   }
 }
 
+void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments) {
+  const Mesh &mesh = caster_mesh(caster);
+  // The mesh's edges by their ends' model positions (lower first), each once per triangle.
+  using End = std::array<float, 3>;
+  std::vector<std::pair<End, End>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const glm::uvec3 &t : mesh.triangles) {
+    for (const auto &[i, j] : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)}) {
+      End p{mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z};
+      End q{mesh.positions[j].x, mesh.positions[j].y, mesh.positions[j].z};
+      if (q < p) std::swap(p, q);
+      if (p != q) edges.emplace_back(p, q);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  // The rims (world): edges walked by one triangle.
+  std::vector<std::pair<glm::vec3, glm::vec3>> rims;
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  const auto world = [&](const End &p) {
+    const glm::vec3 w(caster.model_to_world * glm::vec4(p[0], p[1], p[2], 1.0f));
+    low = glm::min(low, w), high = glm::max(high, w);
+    return w;
+  };
+  for (std::size_t first = 0, end = 0; first < edges.size(); first = end) {
+    for (end = first + 1; end < edges.size() && edges[end] == edges[first];) ++end;
+    if (end - first == 1) rims.emplace_back(world(edges[first].first), world(edges[first].second));
+  }
+  if (rims.empty()) return;
+  // Metres: a segment's ends lie on their edge within float rounding of the rims' extent.
+  const float tolerance = 1e-4f * glm::length(high - low);
+  auto on_rim = [&](const std::pair<glm::vec3, glm::vec3> &rim, const glm::vec3 &p) {
+    const glm::vec3 along = rim.second - rim.first;
+    const float length_squared = glm::dot(along, along);
+    if (!(length_squared > 0.0f)) return false;
+    const float f = std::clamp(glm::dot(p - rim.first, along) / length_squared, 0.0f, 1.0f);
+    return glm::length(rim.first + f * along - p) <= tolerance;
+  };
+  for (SilhouetteSegment &segment : segments) {
+    segment.rim = std::any_of(rims.begin(), rims.end(), [&](const auto &rim) {
+      return on_rim(rim, segment.a) && on_rim(rim, segment.b);
+    });
+  }
+}
+
 float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
   const float width = static_cast<float>(scene.width), height = static_cast<float>(scene.height);
   // The screen's sides as half-planes (x, y, 1) . side >= 0.
@@ -298,15 +350,38 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
   return std::min(pixels, width * height);
 }
 
+AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,
+                                    float largest_footprint, const EdgeErrorEstimate &within_budget,
+                                    const std::optional<float> &largest_edge_pixels) {
+  AcceptedSize accepted;
+  for (int doubling = 0, tried = size; tried <= largest_size; ++doubling, tried *= 2) {
+    accepted.largest_tried = tried;
+    const bool footprint_fits =
+        footprint * static_cast<float>(size) / static_cast<float>(tried) <= largest_footprint;
+    // Past the sizes estimated, the largest one's error halves with each doubling: a shadow
+    // edge strays by a share of a texel's width.
+    const int estimated = std::min(doubling, EdgeErrorEstimate::kSizes - 1);
+    const bool edges_fit =
+        !largest_edge_pixels ||
+        std::ldexp(within_budget.pixels[estimated], estimated - doubling) <= *largest_edge_pixels;
+    if (footprint_fits && edges_fit) {
+      accepted.size = tried;
+      break;
+    }
+  }
+  return accepted;
+}
+
+std::string accepted_size_words(const AcceptedSize &accepted) {
+  return accepted.size ? "size " + std::to_string(accepted.size) + " would be accepted"
+                       : "no size up to " + std::to_string(accepted.largest_tried) +
+                             " would be accepted";
+}
+
 std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
-                                      int size, int largest_size) {
-  int accepted = size, doubling = 0;
-  while (accepted <= largest_size &&
-         (doubling >= EdgeErrorEstimate::kSizes || frame.pixels[doubling] > largest_pixels)) {
-    accepted *= 2, ++doubling;
-  }
+                                      int size, const AcceptedSize &accepted) {
   char pixels[200];
   std::snprintf(pixels, sizeof pixels,
                 "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
@@ -316,10 +391,7 @@ std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
-         "-texel shadow is too coarse for the screen (" +
-         (accepted <= largest_size
-              ? "size " + std::to_string(accepted) + " would be accepted"
-              : "no size up to " + std::to_string(largest_size) + " would be accepted") +
+         "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
          "); it casts no shadow from this light";
 }
 

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,11 +23,13 @@ namespace gs {
 // An edge of the caster's silhouette from the light (or its cut by a pierced receiver's plane),
 // world space, as much of it as step 1 draws; the normal (world, not unit) of the caster's face
 // along it that the light sees, and a point of that face off the edge (the texture covers its
-// side of the edge). A cut has a zero normal: neither is known there.
+// side of the edge). A cut has a zero normal: neither is known there. `rim`: the edge is on one
+// triangle only (an open caster's border, mark_rims): no back of the caster hides what is behind.
 struct SilhouetteSegment {
   glm::vec3 a{0.0f}, b{0.0f};
   glm::vec3 lit_face{0.0f};
   glm::vec3 face_point{0.0f};
+  bool rim = false;
 };
 
 // The share of the receivers' pixels a frame's estimate may reach: the 0.1% interior-error
@@ -63,7 +66,10 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // covers next to it, and its distance from the true edge taken to the screen across the edge.
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
-// from under the caster counts where the camera (world) sees past the caster's lit face.
+// from under the caster counts where the camera (world) sees past the caster's lit face. Seen
+// from behind its lit face, such an edge on a rim (a wall with no back, the foot of an open
+// tube) shows the receiver beyond it, in the caster's shadow right from the foot: there the
+// texture's edge straying under the caster lights it, beyond the band of the visible edge.
 void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
@@ -92,13 +98,34 @@ inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &
 void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,
                    const std::vector<glm::vec4> &cut_planes, std::vector<SilhouetteSegment> &segments);
 
-// The refusal of a shadow whose edges would stray too far (the projected techniques'), naming
-// the light, the caster, the receiver with the most of the error, the estimate (`frame`: the
-// frame's with this shadow's, `taken` of it by the shadows before) against the most accepted
-// (pixels), and the smallest size up to `largest_size` that would be accepted.
+// Sets `rim` on the segments among `segments` (world) that lie along an edge of the caster's
+// mesh that only one triangle has (its positions welded): an open tube's or a sheet's border.
+void mark_rims(const SceneObject &caster, std::vector<SilhouetteSegment> &segments);
+
+// The smallest shadow size from `size` up to `largest_size`, doubling, at which a caster's
+// shadow would be accepted: its coarsest texel footprint (`footprint` screen pixels at `size`,
+// halving as the size doubles) at most `largest_footprint`, and, when `largest_edge_pixels` is
+// set, the frame's edge error with it (`within_budget`) at most that. The edge error is
+// estimated up to 8 times `size`; past that, it is extrapolated from there, halving with each
+// doubling as the texels' width does (a guess: rendering at the size named may be refused again).
+struct AcceptedSize {
+  int size = 0;          // 0: none of the sizes tried
+  int largest_tried = 0;
+};
+AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,
+                                    float largest_footprint, const EdgeErrorEstimate &within_budget,
+                                    const std::optional<float> &largest_edge_pixels);
+
+// "size N would be accepted", or "no size up to M would be accepted": how refusals end.
+std::string accepted_size_words(const AcceptedSize &accepted);
+
+// The refusal of a shadow whose edges would stray too far (the projected techniques' and the
+// depth map's), naming the light, the caster, the receiver with the most of the error, the
+// estimate (`frame`: the frame's with this shadow's, `taken` of it by the shadows before)
+// against the most accepted (pixels), and the size that would be accepted.
 std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
-                                      int size, int largest_size);
+                                      int size, const AcceptedSize &accepted);
 
 }  // namespace gs

@@ -86,11 +86,11 @@ FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &no
 FootprintSample shadow_footprint(std::vector<FootprintSample> samples, float ignored_pixels);
 
 // The refusal of a shadow whose texels are too coarse for the screen (the projected techniques'
-// and the depth map's), naming the light, the caster, the receiver, the footprint, the largest
-// accepted and the smallest size up to `largest_size` (the technique's largest map) that would
-// be accepted: the footprint halves as the size doubles.
+// and the depth map's), naming the light, the caster, the receiver, the footprint and the
+// largest accepted, ending with `accepted_words` (accepted_size_words, shadow_edge_error.h: the
+// size that would be accepted, along the shadow's edges too).
 std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
                                   std::size_t receiver, float footprint, float largest, int size,
-                                  int largest_size);
+                                  const std::string &accepted_words);
 
 }  // namespace gs

@@ -49,6 +49,9 @@ TEST(CommandLineExitCodes, UsageErrorsExitTwo) {
         "render " + kHardCases + "/box_over_floor.json --bias-bound -1",
         std::string("bench --quick --budget nan"),
         std::string("truth --mask ") + out + "/m.png", "demo --frames 0 --out " + out,
+        "render " + kHardCases + "/box_over_floor.json --shadow-size 8192",
+        // The projected techniques draw at most 512 texels; larger sizes are the depth map's.
+        "render " + kHardCases + "/box_over_floor.json --technique projected-chroma --shadow-size 1024",
         "demo --shadow-size 4096 --out " + out}) {
     const ToolRun run = run_tool(arguments);
     EXPECT_EQ(run.exit_code, 2) << "'" << arguments << "': " << run.output;
@@ -85,6 +88,21 @@ TEST(CommandLineExitCodes, RenderWritesPngWhateverTheName) {
     written.read(signature.data(), 8);
     EXPECT_EQ(signature, std::string("\x89PNG\r\n\x1a\n", 8)) << name;
   }
+}
+
+// A depth-map refusal may name a size above 512 ("size 1024 would be accepted"): render takes
+// it for the depth map, and refuses it for the projected techniques, saying what they draw.
+TEST(CommandLineExitCodes, ShadowSizesAbove512AreTheDepthMaps) {
+  const std::string scene = kHardCases + "/box_over_floor.json";
+  const ToolRun depth_map =
+      run_tool("render " + scene + " --technique depth-map --shadow-size 1024 --out /dev/null");
+  EXPECT_EQ(depth_map.exit_code, 0) << depth_map.output;
+  const ToolRun projected =
+      run_tool("render " + scene + " --technique projected --shadow-size 2048 --out /dev/null");
+  EXPECT_EQ(projected.exit_code, 2) << projected.output;
+  EXPECT_NE(projected.output.find("the projected technique draws at most 512 texels"),
+            std::string::npos)
+      << projected.output;
 }
 
 // A frame the technique cannot shadow fully is an error unless the user allows missing shadows.
