@@ -34,44 +34,63 @@ bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 
 
 ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &caster,
                                    const ProjectedObject &receiver, const glm::vec3 &camera,
-                                   const glm::mat4 &camera_clip)
+                                   const glm::mat4 &camera_clip, const glm::vec2 &low,
+                                   const glm::vec2 &high)
     : view_(view), camera_(camera), camera_clip_(camera_clip),
       light_clip_(view.projection * view.view), clip_to_world_(glm::inverse(light_clip_)) {
   const Mesh &mesh = caster_mesh(caster);
   std::vector<glm::vec3> world(mesh.positions.size());
-  std::vector<glm::vec4> clip(world.size()), camera_points(world.size());
+  std::vector<glm::vec4> camera_points(world.size());
   for (std::size_t i = 0; i < world.size(); ++i) {
     world[i] = glm::vec3(caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
-    clip[i] = light_clip_ * glm::vec4(world[i], 1.0f);
     camera_points[i] = camera_clip_ * glm::vec4(world[i], 1.0f);
   }
-  for (const glm::uvec3 &t : mesh.triangles) add(world, clip, camera_points, t, true);
-  clip.resize(receiver.world.size());
-  for (std::size_t i = 0; i < clip.size(); ++i) {
-    clip[i] = light_clip_ * glm::vec4(receiver.world[i], 1.0f);
+  std::vector<glm::vec2> screen;
+  std::vector<float> w;
+  to_light_screen(world, screen, w);
+  faces_.reserve(mesh.triangles.size());
+  // Every caster triangle: any of them may hide a receiver point from the camera.
+  for (const glm::uvec3 &t : mesh.triangles) {
+    add(world, screen, w, camera_points, t, true, glm::vec2(-INFINITY), glm::vec2(INFINITY));
   }
+  caster_faces_ = faces_.size();
+  to_light_screen(receiver.world, screen, w);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-    add(receiver.world, clip, {}, t, false);
+    add(receiver.world, screen, w, {}, t, false, low, high);
   }
 }
 
-void ContactStripRays::add(const std::vector<glm::vec3> &world, const std::vector<glm::vec4> &clip,
-                           const std::vector<glm::vec4> &camera, const glm::uvec3 &t,
-                           bool caster) {
-  const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
-  const glm::vec3 normal = glm::cross(b - a, c - a);  // as wound: outward, faces culled behind
-  Face f{a, b - a, c - a, caster, glm::dot(normal, view_.position - a) > 0.0f,
-         glm::dot(normal, camera_ - a) > 0.0f};
-  if (!caster && !f.light_facing) return;  // the receiver's mask is its light-facing surface
-  const glm::vec4 &p = clip[t.x], &q = clip[t.y], &r = clip[t.z];
-  if (p.w > 0.0f && q.w > 0.0f && r.w > 0.0f) {
-    f.low = glm::vec2(INFINITY), f.high = glm::vec2(-INFINITY);
-    for (const glm::vec4 *v : {&p, &q, &r}) {
-      const GrVertex screen = to_screen(*v, view_.size, view_.size);
-      f.low = glm::min(f.low, glm::vec2(screen.x, screen.y));
-      f.high = glm::max(f.high, glm::vec2(screen.x, screen.y));
+void ContactStripRays::to_light_screen(const std::vector<glm::vec3> &world,
+                                       std::vector<glm::vec2> &screen, std::vector<float> &w) const {
+  screen.resize(world.size());
+  w.resize(world.size());
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    const glm::vec4 clip = light_clip_ * glm::vec4(world[i], 1.0f);
+    w[i] = clip.w;
+    if (clip.w > 0.0f) {
+      const GrVertex v = to_screen(clip, view_.size, view_.size);
+      screen[i] = glm::vec2(v.x, v.y);
     }
   }
+}
+
+bool ContactStripRays::add(const std::vector<glm::vec3> &world, const std::vector<glm::vec2> &screen,
+                           const std::vector<float> &w, const std::vector<glm::vec4> &camera,
+                           const glm::uvec3 &t, bool caster, const glm::vec2 &low,
+                           const glm::vec2 &high) {
+  Face f;
+  f.caster = caster;
+  if (w[t.x] > 0.0f && w[t.y] > 0.0f && w[t.z] > 0.0f) {
+    f.low = glm::min(screen[t.x], glm::min(screen[t.y], screen[t.z]));
+    f.high = glm::max(screen[t.x], glm::max(screen[t.y], screen[t.z]));
+  }
+  if (f.high.x < low.x || f.low.x > high.x || f.high.y < low.y || f.low.y > high.y) return false;
+  const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
+  const glm::vec3 normal = glm::cross(b - a, c - a);  // as wound: outward, faces culled behind
+  f.a = a, f.e1 = b - a, f.e2 = c - a;
+  f.light_facing = glm::dot(normal, view_.position - a) > 0.0f;
+  f.camera_facing = glm::dot(normal, camera_ - a) > 0.0f;
+  if (!caster && !f.light_facing) return false;  // the receiver's mask is its light-facing surface
   if (caster && camera[t.x].w > 0.0f && camera[t.y].w > 0.0f && camera[t.z].w > 0.0f) {
     f.camera_low = glm::vec2(INFINITY), f.camera_high = glm::vec2(-INFINITY);
     for (unsigned i : {t.x, t.y, t.z}) {
@@ -80,6 +99,7 @@ void ContactStripRays::add(const std::vector<glm::vec3> &world, const std::vecto
     }
   }
   faces_.push_back(f);
+  return true;
 }
 
 void ContactStripRays::select(const glm::vec2 &low, const glm::vec2 &high) {
@@ -97,9 +117,9 @@ bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
   // A face's NDC bounds widened by a little more than float rounding; the test is exact.
   const float slack = 1e-4f;
   // t runs from the point (0) to the camera (1); a triangle the point lies on is not between.
-  return std::any_of(faces_.begin(), faces_.end(), [&](const Face &f) {
+  return std::any_of(faces_.begin(), faces_.begin() + static_cast<std::ptrdiff_t>(caster_faces_), [&](const Face &f) {
     float t = 0.0f;
-    return f.caster && !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
+    return !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
                                         ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack)) &&
            meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < 1.0f;
   });
@@ -114,8 +134,15 @@ bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
   const float w_per_t = (light_clip_ * glm::vec4(direction, 0.0f)).w;
   float first_front = INFINITY;  // the caster's first light-facing surface
   hits_.clear();
+  // A face's bounds widened by far more than the rounding of p's ray and of its corners' screen
+  // positions (texels); the test is exact.
+  const float slack = 1e-2f;
   for (const Face *f : selected_) {
     float t = 0.0f;
+    if (p.x < f->low.x - slack || p.x > f->high.x + slack || p.y < f->low.y - slack ||
+        p.y > f->high.y + slack) {
+      continue;
+    }
     if (!meets(view_.position, direction, f->a, f->e1, f->e2, t) || !(t > 0.0f)) continue;
     if (f->caster && f->light_facing) first_front = std::min(first_front, t);
     // Step 1's mask leaves out the receiver nearer the light than the caster's front.

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace gs {
@@ -24,10 +25,11 @@ class ContactStripRays {
  public:
   // `caster` closed (step 1 culls its faces turned from the light), `receiver` the surface that
   // masks it, `camera` the scene camera's position (world) and `camera_clip` its world to clip
-  // matrix. `view` is kept by reference.
+  // matrix. Rays are cast only within low..high (the light's screen, texels): receiver
+  // triangles whose bounds miss it are left out. `view` is kept by reference.
   ContactStripRays(const LightView &view, const SceneObject &caster,
                    const ProjectedObject &receiver, const glm::vec3 &camera,
-                   const glm::mat4 &camera_clip);
+                   const glm::mat4 &camera_clip, const glm::vec2 &low, const glm::vec2 &high);
 
   // Keeps only the triangles whose bounds in the light's screen (texels) meet low..high, for
   // the rays that follow.
@@ -55,16 +57,23 @@ class ContactStripRays {
     float t;  // along the ray from the light, 1 at its point at NDC depth 0.5
     const Face *face;
   };
-  // A triangle of vertices i, j, k of `world` (light clip `clip`, camera clip `camera`).
-  void add(const std::vector<glm::vec3> &world, const std::vector<glm::vec4> &clip,
-           const std::vector<glm::vec4> &camera, const glm::uvec3 &t, bool caster);
+  // A triangle of vertices i, j, k of `world` (light screen `screen`, texels, valid where light
+  // clip `w` > 0; camera clip `camera`); false (and nothing added) when it is a receiver
+  // triangle turned from the light or whose bounds miss low..high.
+  bool add(const std::vector<glm::vec3> &world, const std::vector<glm::vec2> &screen,
+           const std::vector<float> &w, const std::vector<glm::vec4> &camera, const glm::uvec3 &t,
+           bool caster, const glm::vec2 &low, const glm::vec2 &high);
+  // The light's screen (texels) and light clip w of each of `world`'s points.
+  void to_light_screen(const std::vector<glm::vec3> &world, std::vector<glm::vec2> &screen,
+                       std::vector<float> &w) const;
   // Whether a caster triangle lies between world point `point` and the camera.
   bool hidden_from_camera(const glm::vec3 &point) const;
 
   const LightView &view_;
   glm::vec3 camera_;
   glm::mat4 camera_clip_, light_clip_, clip_to_world_;
-  std::vector<Face> faces_;
+  std::vector<Face> faces_;    // the caster's first, then the receiver's
+  std::size_t caster_faces_ = 0;
   std::vector<const Face *> selected_;
   mutable std::vector<Hit> hits_;
 };

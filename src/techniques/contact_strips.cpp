@@ -68,6 +68,15 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
   const float k = kContactStripTexels;
   const float reach = kContactStripTexels;  // the filter's, around a texel a strip empties
   const float step = 0.5f;                  // between the rays, texels
+  const float margin = k + reach;
+  // The cuts step 1 draws, each as its ends in the light's screen (texels), and the box of the
+  // rays around them all.
+  struct Cut {
+    const ContactSegment *contact;
+    glm::vec2 a, b;
+  };
+  std::vector<Cut> cuts;
+  glm::vec2 rays_low(INFINITY), rays_high(-INFINITY);
   for (const ContactSegment &c : contacts) {
     if (glm::dot(c.receiver_normal, view.position - c.a) <= 0.0f ||
         glm::dot(c.caster_normal, view.position - c.a) <= 0.0f) {
@@ -79,8 +88,17 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     const GrVertex va = to_screen(clip_a, view.size, view.size);
     const GrVertex vb = to_screen(clip_b, view.size, view.size);
     const glm::vec2 a(va.x, va.y), b(vb.x, vb.y);
+    if (!(glm::length(b - a) > 0.0f)) continue;  // the segment along a light ray: no width to hide
+    cuts.push_back({&c, a, b});
+    // Every ray (the grid below) lies within margin + step of the cut along it and across it,
+    // so less than twice that from a or b on each axis: a box that much wider holds them all.
+    rays_low = glm::min(rays_low, glm::min(a, b) - glm::vec2(2.0f * (margin + step)));
+    rays_high = glm::max(rays_high, glm::max(a, b) + glm::vec2(2.0f * (margin + step)));
+  }
+  for (const Cut &cut : cuts) {
+    const ContactSegment &c = *cut.contact;
+    const glm::vec2 a = cut.a, b = cut.b;
     const float screen_length = glm::length(b - a);
-    if (!(screen_length > 0.0f)) continue;  // the segment along a light ray: no width to hide
     // Both sides of the cut alike: the hidden side (the caster's plane in front of the
     // receiver) and the visible one (behind it, by less than a code near the line). Screen
     // points as (along the cut from a, across it), texels.
@@ -95,12 +113,11 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     const int pieces = std::max(1, static_cast<int>(std::ceil(screen_length + 2.0f * k)));
     const float piece = (screen_length + 2.0f * k) / static_cast<float>(pieces);
     std::vector<int> kept_sides(static_cast<std::size_t>(pieces), 3);  // bit 0: across < 0
-    const float margin = k + reach;
     const int columns = static_cast<int>(std::ceil((screen_length + 2.0f * margin) / step)) + 1;
     const int rows = static_cast<int>(std::ceil(2.0f * margin / step)) + 1;
     const glm::vec2 ends[4] = {at(-margin, -margin), at(screen_length + margin, margin),
                                at(-margin, margin), at(screen_length + margin, -margin)};
-    if (!rays) rays.emplace(view, caster, receiver, camera, camera_clip);
+    if (!rays) rays.emplace(view, caster, receiver, camera, camera_clip, rays_low, rays_high);
     rays->select(glm::min(glm::min(ends[0], ends[1]), glm::min(ends[2], ends[3])),
                 glm::max(glm::max(ends[0], ends[1]), glm::max(ends[2], ends[3])));
     for (int i = 0; i < columns; ++i) {
