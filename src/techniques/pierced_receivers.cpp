@@ -73,7 +73,7 @@ std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGe
     const bool before = std::any_of(caster_world.begin(), caster_world.end(), [&](const glm::vec3 &p) {
       return glm::dot(plane, glm::vec4(p, 1.0f)) > tolerance;
     });
-    if (beyond) pierced.push_back({r, true, plane, before, {}});
+    if (beyond) pierced.push_back({r, true, plane, before, {}, {}});
   }
   return pierced;
 }

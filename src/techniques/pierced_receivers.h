@@ -8,6 +8,7 @@
 // pierced_surfaces.cpp). docs/hard_cases_results.md measures both and their cost.
 #pragma once
 
+#include "techniques/contact_strips.h"
 #include "techniques/projected_shadow.h"
 #include "techniques/scene_pass.h"
 #include "scene/scene.h"
@@ -28,6 +29,10 @@ struct PiercedReceiver {
   // Not planar: per triangle of the caster's mesh (caster_mesh), 1 where it passes through the
   // receiver's surface (its cut by the surface is an edge of the shadow).
   std::vector<std::uint8_t> caster_crossing;
+  // Not planar: where a caster triangle and a receiver triangle pass through each other, the
+  // segment (world) they share, with each one's unit normal (as wound, world): step 1 keeps the
+  // caster out of the texels beside it on the caster's inside (contact_strips.h).
+  std::vector<ContactSegment> contacts;
 };
 
 // The receivers of `caster`'s shadow from the light at `light_position` (world) that it reaches

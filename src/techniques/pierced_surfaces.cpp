@@ -11,9 +11,11 @@
 #include <glideutl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -316,6 +318,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
       glm::min(box_high, surface_high + margin), caster, caster_index);
   pierced.caster_crossing.assign(caster_triangles.size(), 0);
   bool any = false;
+  std::vector<ContactPoint> points;  // each crossing point (world) with its pair of triangles
   // The caster's edges through the receiver's triangles, and the receiver's through the caster's.
   auto edges_through = [&](const std::vector<Triangle> &edges, const std::vector<Triangle> &faces,
                            const TriangleGrid &grid, bool edges_are_caster) {
@@ -329,6 +332,12 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
             if (!crosses(faces[f], p, q, tolerance)) continue;
             pierced.caster_crossing[edges_are_caster ? caster_index[e] : caster_index[f]] = 1;
             any = true;
+            const float dp = glm::dot(faces[f].normal, p - faces[f].a);
+            const float dq = glm::dot(faces[f].normal, q - faces[f].a);
+            const Triangle &kept_surface = edges_are_caster ? faces[f] : t;
+            const Triangle &kept_caster = edges_are_caster ? t : faces[f];
+            points.push_back({edges_are_caster ? f : e, edges_are_caster ? e : f,
+                              p + (q - p) * (dp / (dp - dq)), kept_surface.normal, kept_caster.normal});
           }
         });
       }
@@ -336,6 +345,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
   };
   edges_through(caster, surface, surface_grid, true);
   edges_through(surface, caster, caster_grid, false);
+  pierced.contacts = contact_segments(std::move(points));
   pierced.casts = true;  // whatever lies behind, step 1's depth test decides per texel
   return any;
 }
@@ -415,6 +425,16 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
       }
     }
   }
+  // Beside the caster's cut by this surface, on its hidden side, the caster is kept out as far
+  // as filtering reaches (contact_strips.h); drawn whatever their winding (the caster is closed,
+  // so step 1 culls with GR_CULL_POSITIVE, which it gets back).
+  if (!view.contact_strips.empty()) grCullMode(GR_CULL_DISABLE);
+  for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const GrVertex &v : strip) low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+    if (view.covered_near(low, high, 1.0f)) draw_fan(std::vector<GrVertex>(strip.begin(), strip.end()));
+  }
+  if (!view.contact_strips.empty()) grCullMode(GR_CULL_POSITIVE);
   grColorMask(FXTRUE, FXFALSE);
   grDepthMask(FXFALSE);
 }

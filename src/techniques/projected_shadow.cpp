@@ -8,6 +8,7 @@
 #include "techniques/step_clock.h"
 
 #include "techniques/caster_surface_from_light.h"
+#include "techniques/contact_strips.h"
 #include "techniques/pierced_receivers.h"
 #include "techniques/receiver_layers.h"
 #include "techniques/slide_projector.h"
@@ -164,6 +165,12 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             job.view = shared->first;
             draw = shared->second;
             if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
+            if (masked && draw.closed) {
+              job.view.contact_strips =
+                  contact_strips(job.view, pierced->contacts, scene.objects[caster],
+                                 frame.objects[pierced->receiver], scene.camera.position,
+                                 frame.view_projection);
+            }
           }
           finish_step(0, step_start);
           // Step 3 needs only step 1's cover, not its pixels: a texture whose receivers give step

@@ -15,6 +15,7 @@
 #include <glide.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -113,6 +114,9 @@ struct LightView {
   // The caster's rim: its edges that one triangle walks (world space, each edge's ends in the
   // order of their model positions), for mark_rims (shadow_edge_error.h).
   std::vector<std::pair<glm::vec3, glm::vec3>> rims;
+  // A SurfaceMask's strips beside the caster's cut by the receiver (contact_strips.h; the
+  // light's screen, texels): step 1 keeps the caster out of them.
+  std::vector<std::array<GrVertex, 4>> contact_strips;
 };
 
 struct ShadowTexture {
