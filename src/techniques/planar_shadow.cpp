@@ -36,7 +36,14 @@ namespace {
 // the rounding of their different vertices makes either one the nearer as often as not.
 // The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
 // alternating covers and seals stay one batch of triangles instead of two state changes each.
-// Each light gets its own band above the previous one's seals, so its covers pass them.
+// Each light's covers must pass the scene pass's depths and not the previous lights' seals, so
+// before a light's polygons, once an earlier light has left seals, the scene pass's depth buffer
+// is drawn again (render_scene_depth, depth only). Each light used to get a band of codes
+// above the previous one's seals instead: 24 codes more margin per light, which let the second
+// light's covers pass whatever lay within 0.44% of its distance in front of their receiver
+// (tests/hard_cases/audit/pl6: a crumpled sheet lying on the floor, in both lights' shadow on
+// the floor, drawn over along a line of 23 pixels where it comes within 2 cm of the floor,
+// 0.131% of the receiver pixels).
 // The cover's margin is 2 codes (w times 1.0003): a margin of 1 left speckled holes in shadows
 // near the camera (0.06 to 0.27% of the receiver pixels, interior, on
 // tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A larger margin lets covers on a
@@ -62,13 +69,10 @@ namespace {
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
 constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
-constexpr float kLightBandCodes = kClippedCoverCodes + kCoverSealCodes;
 // In pixels of the receiver's gradient, over receivers past the window only: the seal clears
-// later covers by kCoverPixels beyond both clips' strays, and each light's band clears the
-// previous light's seals by kCoverPixels again.
+// later covers by kCoverPixels beyond both clips' strays.
 constexpr float kCoverPixels = 1.0f / 16.0f;
 constexpr float kSealPixels = 2.0f * kCoverPixels;
-constexpr float kLightBandPixels = kCoverPixels + kSealPixels + kCoverPixels;
 
 // The Voodoo's 12.4 screen coordinates: what the rasteriser uses of a vertex's x and y.
 float snap(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
@@ -152,10 +156,8 @@ void draw_at_level(const std::vector<GrVertex> &polygon, const DepthPlane &plane
   if (past_part.size() >= 3) draw_fan(past_part);
 }
 
-// Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
-// buffer, whose depth buffer holds the scene pass's surfaces.
-void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
-                          const PlanarShadows &shadows, GrColor_t color, bool opaque) {
+// The state the covers and seals are drawn in: flat `color`, iterated alpha blended.
+void set_polygon_state(GrColor_t color) {
   grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
   grDepthBufferFunction(GR_CMP_LESS);
   grDepthMask(FXTRUE);
@@ -167,12 +169,24 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
                  GR_COMBINE_OTHER_NONE, FXFALSE);
   grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
                        GR_BLEND_ZERO);
+}
+
+// Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
+// buffer, whose depth buffer holds the scene pass's surfaces.
+void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
+                          const PlanarShadows &shadows, GrColor_t color, bool opaque) {
+  set_polygon_state(color);
   std::vector<ClipVertex> polygon, receiver_polygon, scratch;
   std::vector<GrVertex> screen, receiver_screen, short_part, past_part;
+  bool sealed = false;  // some light's seals are in the depth buffer
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
     const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
-    const float band = static_cast<float>(l) * kLightBandCodes;
+    if (sealed && !light.polygons.empty()) {
+      render_scene_depth(scene, frame);
+      set_polygon_state(color);
+      sealed = false;
+    }
     for (const ShadowPolygons::Polygon &p : light.polygons) {
       polygon.clear();
       for (std::uint32_t i = 0; i < p.count; ++i) {
@@ -222,11 +236,11 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       }
       // The gradient's share only where the shim clipped the receiver to the window.
       const float strays = past_window ? 1.0f : 0.0f;
-      const Level cover = {band + (clipped ? kClippedCoverCodes : kCoverCodes),
-                           strays * (static_cast<float>(l) * kLightBandPixels + kCoverPixels)};
+      const Level cover = {clipped ? kClippedCoverCodes : kCoverCodes, strays * kCoverPixels};
       const Level seal = {cover.codes + kCoverSealCodes, cover.pixels + strays * kSealPixels};
       draw_at_level(screen, plane, cover, alpha, short_part, past_part);
       draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
+      sealed = true;
     }
   }
   set_scene_state();
@@ -270,9 +284,7 @@ class PlanarShadow final : public ShadowTechnique {
     // Step 3 left its seals in the depth buffer, which its covers would fail. The scene pass's
     // depth is drawn again (colour writes off; the same vertices give the same depths), so the
     // covers pass exactly where they darkened the frame.
-    grColorMask(FXFALSE, FXFALSE);
-    render_scene(scene, frame_);
-    grColorMask(FXTRUE, FXFALSE);
+    render_scene_depth(scene, frame_);
     grDepthMask(FXFALSE);
     grBufferClear(0, 0, 0);  // colour only
     draw_shadow_polygons(scene, frame_, shadows_, 0xFFFFFFFFu, true);  // white, opaque

@@ -128,4 +128,16 @@ void render_scene(const Scene &scene, const FrameGeometry &frame) {
   }
 }
 
+void render_scene_depth(const Scene &scene, const FrameGeometry &frame) {
+  set_scene_state();
+  grColorMask(FXFALSE, FXFALSE);
+  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);  // depth only: colour writes are off
+  for (const ProjectedObject &object : frame.objects) {
+    for (const glm::uvec3 &triangle : object.object->mesh.triangles) {
+      draw_object_triangle(frame, scene, object, triangle);
+    }
+  }
+  grColorMask(FXTRUE, FXFALSE);
+}
+
 }  // namespace gs

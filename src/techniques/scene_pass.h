@@ -41,6 +41,10 @@ void draw_fan(const std::vector<GrVertex> &polygon);
 // culled) and the pass itself: clear, then every object Gouraud-shaded.
 void set_scene_state();
 void render_scene(const Scene &scene, const FrameGeometry &frame);
+// The scene pass's depth buffer again, colour left as it is: depth cleared, then every triangle
+// with the very vertices render_scene sends (so every pixel gets the same depth), colour writes
+// off. Leaves the scene pass's state with colour writes back on (alpha off).
+void render_scene_depth(const Scene &scene, const FrameGeometry &frame);
 
 // Draws one triangle of a projected object, clipping through the camera when it must.
 void draw_object_triangle(const FrameGeometry &frame, const Scene &scene,
