@@ -48,16 +48,11 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
   // Every object for the rays: what hides a receiver point from the camera, and what else
   // shadows it (another caster, or the receiver itself: its own shadow is left out of the count).
   const std::vector<RayBody> bodies = ray_bodies(meshes);
-  FootprintSpace space;  // for the screen positions
-  space.camera_clip = camera_projection(scene.camera, scene.width, scene.height) *
-                      camera_view(scene.camera);
-  space.pixels = glm::vec2(static_cast<float>(scene.width), static_cast<float>(scene.height));
+  const FootprintSpace space = camera_screen(scene);  // for the screen positions
   const glm::dmat4 camera_clip(space.camera_clip);
   const dvec3 camera(scene.camera.position), light_position(light.position);
   const LightBeam beam = light_beam(light);
-  const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                         glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-  const glm::mat4 to_map = bias * frustum.projection * frustum.view;
+  const glm::mat4 to_map = texture_from_clip() * frustum.projection * frustum.view;
   const int largest_side = side << (EdgeErrorEstimate::kSizes - 1);
   auto box_of = [](const std::vector<glm::vec3> &points, glm::vec3 &low, glm::vec3 &high) {
     low = glm::vec3(INFINITY), high = glm::vec3(-INFINITY);

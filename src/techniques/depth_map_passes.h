@@ -9,12 +9,19 @@
 #include "techniques/technique.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
 namespace gs::depth_map {
+
+// Light clip space to the map's texture coordinates: s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.
+inline glm::mat4 texture_from_clip() {
+  return glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
+         glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+}
 
 // An object's vertices in world space: the arrays every pass draws.
 struct WorldMesh {

@@ -8,6 +8,8 @@
 
 #include "techniques/depth_map_facets.h"
 #include "techniques/depth_map_passes.h"
+#include "techniques/projection.h"
+#include "techniques/texel_footprint.h"
 #include "techniques/triangle_bvh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,15 +32,22 @@ struct DrawnSurface {
   std::vector<double> slope_term;
 };
 
+// The camera's clip matrix and the screen's size (pixels), to find a world point's pixel.
+inline FootprintSpace camera_screen(const Scene &scene) {
+  FootprintSpace space;
+  space.camera_clip =
+      camera_projection(scene.camera, scene.width, scene.height) * camera_view(scene.camera);
+  space.pixels = glm::vec2(static_cast<float>(scene.width), static_cast<float>(scene.height));
+  return space;
+}
+
 // One map size's replay of the lookup.
 class MapReplay {
  public:
   MapReplay(const LightFrustum &frustum, const SpotLight &light, int side,
             const TechniqueOptions &options)
       : light_(light.position), side_(side), options_(options) {
-    const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                           glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-    to_map_ = glm::dmat4(bias * frustum.projection * frustum.view);
+    to_map_ = glm::dmat4(texture_from_clip() * frustum.projection * frustum.view);
     from_clip_ = glm::inverse(glm::dmat4(frustum.projection * frustum.view));
     view_ = glm::dmat4(frustum.view);
     texel_per_metre_ = frustum.texel_per_metre(side);

@@ -44,15 +44,10 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   if (!bounded) return result;  // the slope term alone follows every face's own slope
   const double grazing_tangent =
       kGrazingTangent * kFilterReachTexels / static_cast<double>(options.depth_bias_bound);
-  FootprintSpace space;  // for the screen positions
-  space.camera_clip =
-      camera_projection(scene.camera, scene.width, scene.height) * camera_view(scene.camera);
-  space.pixels = glm::vec2(static_cast<float>(scene.width), static_cast<float>(scene.height));
+  const FootprintSpace space = camera_screen(scene);  // for the screen positions
   const glm::dmat4 camera_clip(space.camera_clip);
   const dvec3 camera(scene.camera.position), light_position(light.position);
   const LightBeam beam = light_beam(light);
-  const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                         glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
   std::vector<RayBody> bodies;  // built on the first grazed triangle: most frames have none
   // The truth's shadow rays start off the surface by 1e-4 of the scene's radius (half its box's
   // diagonal, src/measure/ground_truth.cpp), which a grazed surface's own rounding needs.
@@ -222,7 +217,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
     const int map_side = side << size;
     const LightFrustum &frustum = frusta[static_cast<std::size_t>(size)];
-    const glm::mat4 to_map = bias * frustum.projection * frustum.view;
+    const glm::mat4 to_map = texture_from_clip() * frustum.projection * frustum.view;
     MapReplay replay(frustum, light, map_side, options);
     for (const WorldMesh &mesh : meshes) {
       if (mesh.object->casts_shadow) replay.add(mesh, frustum);

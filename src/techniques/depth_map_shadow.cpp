@@ -224,9 +224,7 @@ void Passes::bind_shadow_units(std::size_t light, GLenum compare) {
   const glm::mat4 light_clip = frustum.projection * frustum.view;  // world to light clip
   // (q, its w, is the light-view depth along the light's own axis, as the gate needs.)
   // S: light clip to texture coordinates, s, t, r = 0.5 (x, y, z) + 0.5 w, q = w.
-  const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                         glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-  to_map_ = bias * light_clip;
+  to_map_ = texture_from_clip() * light_clip;
   bound_side_ = sides_[light];
   glm::mat4 to_gate(0.0f);  // s = kGateSlope q, t = 0, q = 1
   to_gate[0][0] = kGateSlope * light_clip[0][3];
