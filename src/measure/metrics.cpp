@@ -120,13 +120,23 @@ bool write_heat_map(const media::ImageFiles &files, const media::FloatImage &a,
 
 MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
                          const std::vector<std::uint8_t> &truth,
-                         const std::vector<std::uint8_t> &receivers, int width, int height,
-                         const std::vector<std::uint8_t> &uncounted_shadow) {
+                         const std::vector<std::uint8_t> &truth_receivers, int width, int height,
+                         const std::vector<std::uint8_t> &uncounted_shadow,
+                         const std::vector<std::uint8_t> &drawn) {
   MaskErrors errors;
   const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
   // The API has no error channel: inputs shorter than width·height compare nothing.
-  if (count == 0 || technique.size() < count || truth.size() < count || receivers.size() < count)
+  if (count == 0 || technique.size() < count || truth.size() < count ||
+      truth_receivers.size() < count)
     return errors;
+  std::vector<std::uint8_t> receivers(truth_receivers.begin(), truth_receivers.begin() + long(count));
+  if (drawn.size() >= count) {
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!receivers[i] || drawn[i]) continue;
+      receivers[i] = 0;
+      ++errors.undrawn_receiver_pixels;
+    }
+  }
   auto at = [width](int x, int y) { return std::size_t(y) * width + x; };
 
   // Boundary: a receiver whose 4-neighbour is also a receiver with the other truth value. The

@@ -12,6 +12,9 @@ namespace gs {
 
 struct MaskErrors {
   long receiver_pixels = 0;          // pixels the comparison counts (visible surfaces)
+  // Receiver pixels of the truth that the technique's frame left as background (its outline
+  // rasterised a hair inside the exact one: the Voodoo's 1/16-pixel vertex snap), not counted.
+  long undrawn_receiver_pixels = 0;
   long false_shadow = 0, false_light = 0;
   double false_shadow_band = 0.0;    // fractions of receiver_pixels
   double false_shadow_interior = 0.0;
@@ -26,10 +29,14 @@ struct MaskErrors {
 // `uncounted_shadow` (empty, or 0/1 per pixel) marks pixels left out of the count that are in
 // shadow all the same (an object's shadow on itself): their edge against a counted pixel the
 // truth calls lit is a true shadow edge, so a wrong pixel beside it is sampling, not interior.
+// `drawn` (empty, or 0/1 per pixel) marks the pixels where the technique's frame drew a surface:
+// a receiver pixel of the truth that the frame left as background shows no shadow decision at
+// all (the same pixel is background in the frame without shadows), so it is not counted either.
 MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
                          const std::vector<std::uint8_t> &truth,
                          const std::vector<std::uint8_t> &receivers, int width, int height,
-                         const std::vector<std::uint8_t> &uncounted_shadow = {});
+                         const std::vector<std::uint8_t> &uncounted_shadow = {},
+                         const std::vector<std::uint8_t> &drawn = {});
 
 struct ImageErrors {
   double mean = 0.0, max = 0.0, psnr = 0.0;  // channel values 0..1; PSNR in dB

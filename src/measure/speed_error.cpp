@@ -4,6 +4,7 @@
 #include "measure/speed_error.h"
 
 #include "measure/ground_truth.h"
+#include "techniques/scene_pass.h"
 
 #include <glide.h>
 #include <glide_shim.h>
@@ -67,6 +68,19 @@ std::vector<std::uint8_t> read_mask_from_back_buffer(int width, int height) {
 }
 
 }  // namespace
+
+std::vector<std::uint8_t> drawn_without_shadows(const Scene &scene) {
+  render_scene(scene, project_scene(scene));
+  // W codes: the scene pass clears to the farthest, and any surface a scene can hold lies nearer
+  // (its far plane is well inside the W range).
+  const int width = scene.width, height = scene.height;
+  std::vector<FxU16> codes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  grLfbReadRegion(GR_BUFFER_AUXBUFFER, 0, 0, static_cast<FxU32>(width), static_cast<FxU32>(height),
+                  static_cast<FxU32>(width) * 2, codes.data());
+  std::vector<std::uint8_t> drawn(codes.size());
+  for (std::size_t i = 0; i < codes.size(); ++i) drawn[i] = codes[i] != GR_WDEPTHVALUE_FARTHEST;
+  return drawn;
+}
 
 std::vector<BenchConfiguration> bench_configurations(bool quick) {
   std::vector<BenchConfiguration> list;
@@ -161,6 +175,7 @@ bool run_bench(const std::vector<BenchFrame> &frames,
       error = std::string("cannot open the Glide window: ") + glideShimGetLastErrorMessage();
       return false;
     }
+    const std::vector<std::uint8_t> drawn = drawn_without_shadows(frame.scene);
     // The frame without shadows, per attenuation setting: each ratio compares like with like.
     std::map<std::optional<AttenuationMode>, double> none_ms;
     for (std::size_t c = 0; c < configurations.size(); ++c) {
@@ -215,7 +230,7 @@ bool run_bench(const std::vector<BenchFrame> &frames,
       }
       technique->render_mask(scene);
       row.errors = compare_masks(read_mask_from_back_buffer(width, height), truth.shadow,
-                                 receivers, width, height, self_only_shadow);
+                                 receivers, width, height, self_only_shadow, drawn);
       row.self_shadow = visible > 0 ? static_cast<double>(self_only) / static_cast<double>(visible) : 0.0;
       rows.push_back(row);
     }

@@ -47,6 +47,12 @@ struct BenchRow {
 
 std::vector<BenchConfiguration> bench_configurations(bool quick);
 
+// The pixels the frame without shadows draws a surface on (1; 0 where it shows the background),
+// rows from the top: the scene pass every technique's frame shares, rendered into the open
+// Glide window's back buffer, whose contents it replaces. A receiver pixel of the ray-cast truth
+// that this frame leaves as background is one no technique's frame shadows (compare_masks).
+std::vector<std::uint8_t> drawn_without_shadows(const Scene &scene);
+
 // The median of `values` (the upper one of an even count); 0 for none.
 double median(std::vector<double> values);
 

@@ -8,6 +8,7 @@
 
 #include "measure/ground_truth.h"
 #include "measure/metrics.h"
+#include "measure/speed_error.h"
 #include "techniques/technique.h"
 
 #include <glide.h>
@@ -54,6 +55,7 @@ inline Truth truth_of(const gs::Scene &scene) {
 // One technique's frame and mask of a scene, in a Glide window of the scene's size.
 struct Outcome {
   std::vector<std::uint8_t> mask;  // 1 where the technique darkened the pixel
+  std::vector<std::uint8_t> drawn;  // 1 where the frame without shadows drew a surface
   long shadowed = 0;
   gs::MaskErrors errors;
   std::vector<std::string> warnings;
@@ -86,11 +88,12 @@ inline Outcome run(const std::string &name, const gs::Scene &scene, const Truth 
   grLfbReadRegion(GR_BUFFER_BACKBUFFER, 0, 0, static_cast<FxU32>(scene.width),
                   static_cast<FxU32>(scene.height), static_cast<FxU32>(scene.width) * 2,
                   pixels.data());
+  outcome.drawn = gs::drawn_without_shadows(scene);
   grGlideShutdown();
   for (FxU16 p : pixels) outcome.mask.push_back(p != 0);
   outcome.shadowed = std::accumulate(outcome.mask.begin(), outcome.mask.end(), 0L);
   outcome.errors = gs::compare_masks(outcome.mask, truth.exact.shadow, truth.receivers,
-                                     scene.width, scene.height, truth.self_only);
+                                     scene.width, scene.height, truth.self_only, outcome.drawn);
   return outcome;
 }
 

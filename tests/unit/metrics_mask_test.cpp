@@ -164,6 +164,34 @@ TEST(CompareMasks, EdgeOfAnUncountedShadowIsABoundary) {
   EXPECT_DOUBLE_EQ(wider.false_shadow_interior, 30.0 / (20 * 30));
 }
 
+// A receiver of the truth whose outline pixel the technique's frame left as background (the
+// rasteriser's outline a hair inside the exact one) shows no shadow decision: with `drawn` it is
+// left out of the count and reported, where without it the same pixel, whose neighbours are all
+// background, is an interior error. A drawn pixel that is wrong still counts.
+TEST(CompareMasks, ReceiverPixelsTheFrameLeftAsBackgroundAreNotCounted) {
+  Mask truth(40, 30), technique(40, 30), receivers(40, 30), drawn(40, 30);
+  receivers.fill(10, 10, 30, 20, 1);  // a receiver in shadow on a background
+  truth.fill(10, 10, 30, 20, 1);
+  drawn.fill(10, 10, 30, 20, 1);
+  technique = truth;
+  receivers.fill(30, 15, 31, 16, 1);  // one more pixel of it in the truth, alone on its right
+  truth.fill(30, 15, 31, 16, 1);
+  const MaskErrors without = compare(technique, truth, receivers);
+  EXPECT_EQ(without.false_light, 1);
+  EXPECT_EQ(without.undrawn_receiver_pixels, 0);
+  const MaskErrors with = compare_masks(technique.pixels, truth.pixels, receivers.pixels, 40, 30,
+                                        {}, drawn.pixels);
+  EXPECT_EQ(with.undrawn_receiver_pixels, 1);
+  EXPECT_EQ(with.receiver_pixels, 20 * 10);
+  EXPECT_EQ(with.false_light, 0);
+  EXPECT_EQ(with.misclassified, 0.0);
+  technique.fill(20, 15, 21, 16, 0);  // a drawn pixel inside the shadow left lit: interior
+  const MaskErrors wrong = compare_masks(technique.pixels, truth.pixels, receivers.pixels, 40,
+                                         30, {}, drawn.pixels);
+  EXPECT_EQ(wrong.false_light, 1);
+  EXPECT_DOUBLE_EQ(wrong.false_light_interior, 1.0 / (20 * 10));
+}
+
 // Deterministic pseudo-random masks so the test is repeatable.
 std::uint32_t next(std::uint32_t &state) {
   state = state * 1664525u + 1013904223u;
