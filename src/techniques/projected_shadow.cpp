@@ -219,9 +219,10 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             pending = PendingRead{id, placed};  // 2, read_pending
           }
           job.texture.id = id;
+          job.mask_farthest = masked && farthest;
           if (job.view.direct_path) {
             job.draw = std::move(draw);
-            if (masked) job.mask_receiver = pierced->receiver, job.mask_farthest = farthest;
+            if (masked) job.mask_receiver = pierced->receiver;
           }
           caster_jobs.push_back(std::move(job));
         }

@@ -228,7 +228,9 @@ struct ShadowJob {
   // memory again the very same way.
   CasterDraw draw;
   std::optional<std::size_t> mask_receiver;
-  bool mask_farthest = false;  // SurfaceMask::farthest of that mask
+  // Every path: whether step 1 masked the caster by a receiver's farthest surface
+  // (SurfaceMask::farthest), which the direct path's drawing again needs too.
+  bool mask_farthest = false;
   GrState step1_state{};
 };
 
