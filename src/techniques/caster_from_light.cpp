@@ -371,8 +371,10 @@ void draw_caster_flat(LightView &view, FxU32 texture_address, const SurfaceMask 
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);
-  grBufferClear(0, 0, GR_WDEPTHVALUE_FARTHEST);
-  if (mask) draw_mask_surface(view, *mask->receiver);  // the caster only where it is nearer
+  // A farthest-surface mask (SurfaceMask::farthest) keeps the greatest W its surface draws, so
+  // its clear is the nearest.
+  grBufferClear(0, 0, mask && mask->farthest ? GR_WDEPTHVALUE_NEAREST : GR_WDEPTHVALUE_FARTHEST);
+  if (mask) draw_mask_surface(view, *mask->receiver, mask->farthest);  // the caster only where it is nearer
   grDepthMask(FXFALSE);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);

@@ -46,15 +46,23 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const SceneObject &caster, const 
     : CasterSurfaceFromLight(caster_mesh(caster), caster.model_to_world, light_clip) {}
 
 CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4 &model_to_world,
-                                               const glm::mat4 &light_clip) {
+                                               const glm::mat4 &light_clip, float nearest_w) {
   std::vector<glm::vec4> clip(mesh.positions.size());
+  std::vector<unsigned> outside(mesh.positions.size(), 0);  // as draw_mask_surface's flags
   for (std::size_t i = 0; i < clip.size(); ++i) {
-    clip[i] = light_clip * (model_to_world * glm::vec4(mesh.positions[i], 1.0f));
-    if (!(clip[i].w > 0.0f)) usable_ = false;
+    const glm::vec4 &p = clip[i] = light_clip * (model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    if (nearest_w > 0.0f) {
+      outside[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
+                   (p.w < nearest_w) << 4 | (p.w <= 0.0f) << 5;
+    } else if (!(p.w > 0.0f)) {
+      usable_ = false;
+    }
   }
   if (!usable_) return;
   faces_.reserve(mesh.triangles.size());
   for (const glm::uvec3 &t : mesh.triangles) {
+    if ((outside[t.x] & outside[t.y] & outside[t.z] & 0x1F) != 0) continue;
+    if (((outside[t.x] | outside[t.y] | outside[t.z]) & 0x20) != 0) continue;
     const glm::vec4 &a = clip[t.x], &b = clip[t.y], &c = clip[t.z];
     Face face;
     face.a = glm::vec2(a) / a.w;
@@ -170,7 +178,8 @@ const CasterSurfaceFromLight &CasterSurfacesFromLight::at(const glm::mat4 &light
 }
 
 const CasterSurfaceFromLight &CasterSurfacesFromLight::receiver_at(const SceneObject &receiver,
-                                                                   const glm::mat4 &light_clip) {
+                                                                   const glm::mat4 &light_clip,
+                                                                   float nearest_w) {
   for (const ReceiverSurface &built : receivers_) {
     if (built.receiver == &receiver &&
         std::memcmp(&built.light_clip, &light_clip, sizeof light_clip) == 0) {
@@ -179,7 +188,7 @@ const CasterSurfaceFromLight &CasterSurfacesFromLight::receiver_at(const SceneOb
   }
   receivers_.push_back({&receiver, light_clip,
                         std::make_unique<CasterSurfaceFromLight>(receiver.mesh, receiver.model_to_world,
-                                                                 light_clip)});
+                                                                 light_clip, nearest_w)});
   return *receivers_.back().surface;
 }
 

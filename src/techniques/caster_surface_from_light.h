@@ -27,9 +27,13 @@ class CasterSurfaceFromLight {
   // so a polygon judged free of it is free of the texture's shadow too.
   CasterSurfaceFromLight(const SceneObject &caster, const glm::mat4 &light_clip);
   // Any mesh (model space, placed by `model_to_world`), both sides: a receiver's own drawn
-  // surface, to tell its triangles that no other part of it hides from the light.
+  // surface, to tell its triangles that no other part of it hides from the light. With
+  // `nearest_w` > 0 (light clip w, metres), only what the mask draws of it (draw_mask_surface:
+  // beyond the caster's front, inside the view's square): faces wholly nearer than that, wholly
+  // to one side of the square or reaching to or behind the light's plane are left out instead
+  // of making every answer unsure (a heightfield around the light).
   CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4 &model_to_world,
-                         const glm::mat4 &light_clip);
+                         const glm::mat4 &light_clip, float nearest_w = 0.0f);
 
   // False only when no point of the convex polygon (light clip corners in order, `count` of
   // them) has a caster surface nearer the light than itself by more than touching (a relative
@@ -86,7 +90,9 @@ class CasterSurfacesFromLight {
   const CasterSurfaceFromLight &at(const glm::mat4 &light_clip);
   // `receiver`'s own drawn surface (its `mesh`, placed by its model_to_world, both sides) for
   // `light_clip`, built at the first call for that object with a matrix of the same bytes.
-  const CasterSurfaceFromLight &receiver_at(const SceneObject &receiver, const glm::mat4 &light_clip);
+  // `nearest_w`: the constructor's, the same at every call for one matrix.
+  const CasterSurfaceFromLight &receiver_at(const SceneObject &receiver, const glm::mat4 &light_clip,
+                                            float nearest_w);
 
  private:
   struct ReceiverSurface {

@@ -354,10 +354,10 @@ float depth_oow(const LightView &view, float light_w) {
   return 0.5f * std::max(view.caster_front, 1e-3f) / light_w;
 }
 
-void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
+void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest) {
   grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
   grDepthMask(FXTRUE);
-  grDepthBufferFunction(GR_CMP_LESS);
+  grDepthBufferFunction(farthest ? GR_CMP_GREATER : GR_CMP_LESS);
   grColorMask(FXFALSE, FXFALSE);
   // Light clip space: beyond the caster's front (w >= caster_front), and the view's square a
   // little wider (so the edge of the texture is covered too). Step 3 never shades the part of a
@@ -437,6 +437,7 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver) {
   if (!view.contact_strips.empty()) grCullMode(GR_CULL_POSITIVE);
   grColorMask(FXTRUE, FXFALSE);
   grDepthMask(FXFALSE);
+  grDepthBufferFunction(GR_CMP_LESS);  // the caster, nearer than the surface kept
 }
 
 }  // namespace gs

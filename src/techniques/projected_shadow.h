@@ -150,6 +150,9 @@ struct ReceiverCoords {
   EdgeErrorEstimate edge_error;
   std::size_t edge_error_receiver = 0;
   float edge_error_receiver_pixels = 0.0f;
+  // Depth band -1: a receiver triangle nearer the light than the band's plane was left to the
+  // texture masked by the receiver's farthest surface (band -2), its own surface hiding it.
+  bool hidden_left = false;
 };
 
 struct StepTimes {
@@ -178,9 +181,13 @@ std::vector<LightView> split_into_textures(const LightView &view);
 // caster only where it is nearer the light than the receiver's light-facing surface, and marks
 // the caster's triangles that pass through that surface (caster_crossing, per caster_mesh
 // triangle) as silhouette, since the cut is an edge of the shadow.
+// With `farthest`, the caster is drawn where it is nearer the light than the receiver's
+// farthest light-facing surface instead: the texture for the receiver's parts that its own
+// nearer surface hides from the light (receiver_coords.cpp, depth band -2).
 struct SurfaceMask {
   const ProjectedObject *receiver = nullptr;
   const std::vector<std::uint8_t> *caster_crossing = nullptr;
+  bool farthest = false;
 };
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address,
@@ -221,6 +228,9 @@ struct ShadowJob {
   // memory again the very same way.
   CasterDraw draw;
   std::optional<std::size_t> mask_receiver;
+  // Every path: whether step 1 masked the caster by a receiver's farthest surface
+  // (SurfaceMask::farthest), which the direct path's drawing again needs too.
+  bool mask_farthest = false;
   GrState step1_state{};
 };
 
@@ -246,6 +256,9 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // nearer than the caster's farthest point and the whole caster's beyond it, where every caster
 // point on the light's ray lies in front of the receiver and shadows it. A triangle across that
 // depth which no part of its receiver hides from the light takes the masked texture, uncut.
+// Nearer than that depth, -1 keeps only the triangles no part of the receiver hides from the
+// light (the texture masked by its nearest surface) and -2 only the others (the texture masked
+// by its farthest light-facing surface, SurfaceMask::farthest).
 // `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,

@@ -279,7 +279,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     // The depth band (light view space, -z against caster_back; the two bands' planes are each
     // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
     const signed char band = depth_bands ? (*depth_bands)[r] : 0;
-    const float side = static_cast<float>(band);  // -1: keep -z <= back; +1: keep -z >= back
+    // -1 and -2: keep -z <= back; +1: keep -z >= back
+    const float side = band < 0 ? -1.0f : static_cast<float>(band);
     band_planes = view_planes;
     band_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
     // The receiver's own surface (light clip), taken at its first triangle across the band's
@@ -307,10 +308,26 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       if (glm::dot(face, light.position - a) <= 0.0f) continue;
       if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x5F) != 0) continue;
       unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
-      if ((any_outside & 0x40) != 0) {  // across the band's plane
-        if (!own_surface) own_surface = &built.receiver_at(*receiver.object, light_clip);
+      // Nearer the light than the band's plane, the receiver's triangles that its own surface
+      // hides from the light (in part) take the texture masked by its farthest light-facing
+      // surface (band -2), the others the one masked by its nearest (-1): a caster part that
+      // the nearer surface hides still shadows the farther one (a cylinder sunk through a
+      // dune, the dune's far slope; the truth lets light through a receiver that casts nothing,
+      // and one that casts shadows its far parts itself, uncounted). Beyond the plane (+1) the
+      // whole caster's texture, except where the receiver hides nothing: the masked one, whole.
+      if (band != 0 && (band < 0 || (any_outside & 0x40) != 0)) {
+        if (!own_surface) {
+          own_surface = &built.receiver_at(*receiver.object, light_clip,
+                                           std::max(view.caster_front, 1e-6f));
+        }
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        if (!own_surface->may_shadow_triangle(*receiver.object, number, corners)) {
+        const bool hidden = own_surface->may_shadow_triangle(*receiver.object, number, corners);
+        if (band == -1 && hidden) {
+          coords.hidden_left = coords.hidden_left || (flags[t.x] & flags[t.y] & flags[t.z] & 0x40) == 0;
+          continue;
+        }
+        if (band == -2 && !hidden) continue;
+        if (!hidden) {
           if (band > 0) continue;  // the masked texture's, whole
           any_outside &= ~0x40u;
         }

@@ -4,7 +4,9 @@
 // plate buried whole in a shelf's slab over the floor of the same mesh).
 // Seen from the light, per sample of the caster's edges: the first needs the texture masked by
 // the receiver's surface (pierced_receivers.h) so the nearer layer stays lit; the second no
-// single texture can serve, and the projected technique refuses it by name.
+// single texture can serve: the projected technique gives the farther layer a texture masked by
+// the receiver's farthest surface when the receiver casts nothing, and refuses one that casts by
+// name (projected_shadow.cpp).
 #pragma once
 
 #include "techniques/pierced_receivers.h"

@@ -60,6 +60,7 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
   LightView view = job.view;
   SurfaceMask mask;
   if (job.mask_receiver) mask.receiver = &geometry.objects[*job.mask_receiver];
+  mask.farthest = job.mask_farthest;
   draw_caster_flat(view, slot.address, job.mask_receiver ? &mask : nullptr, job.draw);
   grGlideSetState(&state);
   if (view.usable) return slot.address;
