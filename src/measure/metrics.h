@@ -12,8 +12,8 @@ namespace gs {
 
 struct MaskErrors {
   long receiver_pixels = 0;          // pixels the comparison counts (visible surfaces)
-  // Receiver pixels of the truth that the technique's frame left as background (its outline
-  // rasterised a hair inside the exact one: the Voodoo's 1/16-pixel vertex snap), not counted.
+  // Receiver pixels of the truth that the frame left as background, not counted: outline pixels
+  // the Voodoo's 1/16-pixel vertex snap moves the edge past, and what the near plane clips.
   long undrawn_receiver_pixels = 0;
   long false_shadow = 0, false_light = 0;
   double false_shadow_band = 0.0;    // fractions of receiver_pixels
@@ -29,9 +29,9 @@ struct MaskErrors {
 // `uncounted_shadow` (empty, or 0/1 per pixel) marks pixels left out of the count that are in
 // shadow all the same (an object's shadow on itself): their edge against a counted pixel the
 // truth calls lit is a true shadow edge, so a wrong pixel beside it is sampling, not interior.
-// `drawn` (empty, or 0/1 per pixel) marks the pixels where the technique's frame drew a surface:
-// a receiver pixel of the truth that the frame left as background shows no shadow decision at
-// all (the same pixel is background in the frame without shadows), so it is not counted either.
+// `drawn` (empty, or 0/1 per pixel) marks the pixels where the frame drew a surface (the frame
+// without shadows, drawn_without_shadows in speed_error.h): a receiver pixel of the truth that
+// the frame leaves as background shows no shadow decision at all, so it is not counted either.
 MaskErrors compare_masks(const std::vector<std::uint8_t> &technique,
                          const std::vector<std::uint8_t> &truth,
                          const std::vector<std::uint8_t> &receivers, int width, int height,
