@@ -8,7 +8,8 @@ issue #14's hard classes with random sizes, angles and distances (scene_classes.
 close behind a wide caster, a long bar across a narrow cone, flags, a tilted plate under an
 oblique light, a light facing the camera, two lights. With --meshes, each scene holds OBJ meshes
 unlike the built-in shapes (tori, concave prisms, open bowls, crumpled sheets, some unwelded
-with zero-area triangles; scene_meshes.py), written beside the scenes. Run them through every technique against
+with zero-area triangles; scene_meshes.py), written beside the scenes. With --sunk, casters lie
+through dunes, the ring or a tilted plate under a light 1 to 20 degrees above it (scene_sunk.py). Run them through every technique against
 the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
@@ -26,6 +27,7 @@ import sys
 
 import scene_classes
 import scene_meshes
+import scene_sunk
 
 
 def rounded(values, digits=3):
@@ -117,21 +119,26 @@ def main():
                         help="issue #14's hard classes with random parameters (scene_classes.py)")
     parser.add_argument("--meshes", action="store_true",
                         help="OBJ meshes unlike the built-in shapes (scene_meshes.py)")
+    parser.add_argument("--sunk", action="store_true",
+                        help="casters lying through a receiver that is not flat, under a low light "
+                             "(scene_sunk.py)")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
     os.makedirs(args.out, exist_ok=True)
-    if args.classes + args.grazing + args.meshes > 1:
-        parser.error("--classes, --grazing and --meshes are separate kinds of scene; give one")
+    if args.classes + args.grazing + args.meshes + args.sunk > 1:
+        parser.error("--classes, --grazing, --meshes and --sunk are separate kinds of scene; give one")
     prefix = ("classes" if args.classes else "grazing" if args.grazing else
-              "meshes" if args.meshes else "random")
+              "meshes" if args.meshes else "sunk" if args.sunk else "random")
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
         if args.classes:
             made = scene_classes.scene(seed)
         elif args.meshes:
             made = scene_meshes.scene(seed, args.out, random.Random(seed))
+        elif args.sunk:
+            made = scene_sunk.scene(seed, random.Random(seed))
         else:
             made = scene(seed, args.grazing)
         with open(path, "w") as f:
