@@ -257,16 +257,14 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
 // texel centre that bilinear filtering reads for a point of the receiver (less than a texel away
 // on each axis, so within sqrt 2, plus the shim's 1/16 snapping) lies in the triangle or in the
 // strip. Wound as p, q, r are, so the caster's cull mode keeps it.
-// A farthest-surface mask (`farthest`, depth test GREATER) keeps the greater W, so its fin only
-// ever carries the edge's depth out over a nearer layer or the clear, never hides a farther one:
-// it is drawn whatever lies beyond, and reaches kFinInwardTexels back over the edge. There the
-// edge is where a hidden layer's rays graze it (a dune's far slope the light meets at a degree,
-// issue 14): a texel beyond it holds the nearer layer in front of the caster, and a texel whose
-// centre the sliver of a triangle holds but its snapped corners leave out (the shim snaps to
-// 1/16 texel, and the fin's corners, off the edge's ends, snap apart from the triangle's) holds
-// nothing; either took the caster out of what the far slope's points read, over many pixels.
+// A farthest-surface mask (`farthest`, depth test GREATER) keeps the greater W: its fin only
+// carries the edge's W over a nearer layer or the clear, never hides a farther one, so it is
+// drawn whatever lies beyond, and from kFinInwardTexels back over the edge, as the fin's corners
+// snap (1/16 texel) apart from the triangle's and a sliver's texel centre could fall between.
+// Else the far slope of a dune the light grazes (issue 14, sf1) read the crest beyond its
+// outline, or nothing, as no caster there: alpha 0 over many pixels.
 constexpr float kFinTexels = 1.5f;
-constexpr float kFinInwardTexels = 0.125f;  // the light's screen: twice the shim's snapping
+constexpr float kFinInwardTexels = 0.125f;  // the light's screen, texels
 void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Outline &outline,
               const glm::vec3 &p_world, const glm::vec3 &q_world, bool farthest) {
   const glm::vec2 a(p.x, p.y), b(q.x, q.y), third(r.x, r.y);
