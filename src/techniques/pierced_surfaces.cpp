@@ -257,20 +257,29 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
 // texel centre that bilinear filtering reads for a point of the receiver (less than a texel away
 // on each axis, so within sqrt 2, plus the shim's 1/16 snapping) lies in the triangle or in the
 // strip. Wound as p, q, r are, so the caster's cull mode keeps it.
+// A farthest-surface mask (`farthest`, depth test GREATER) keeps the greater W: its fin only
+// carries the edge's W over a nearer layer or the clear, never hides a farther one, so it is
+// drawn whatever lies beyond, and from kFinInwardTexels back over the edge, as the fin's corners
+// snap (1/16 texel) apart from the triangle's and a sliver's texel centre could fall between.
+// Else the far slope of a dune the light grazes (issue 14, sf1) read the crest beyond its
+// outline, or nothing, as no caster there: alpha 0 over many pixels.
 constexpr float kFinTexels = 1.5f;
+constexpr float kFinInwardTexels = 0.125f;  // the light's screen, texels
 void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Outline &outline,
-              const glm::vec3 &p_world, const glm::vec3 &q_world) {
+              const glm::vec3 &p_world, const glm::vec3 &q_world, bool farthest) {
   const glm::vec2 a(p.x, p.y), b(q.x, q.y), third(r.x, r.y);
   const float length = glm::length(b - a);
   if (!(length > 0.0f)) return;
   const glm::vec2 along = (b - a) / length;
   glm::vec2 out(along.y, -along.x);
   if (glm::dot(out, third - a) > 0.0f) out = -out;
-  const glm::vec2 corners[4] = {a - along * kFinTexels, b + along * kFinTexels,
+  const glm::vec2 inward = farthest ? -out * kFinInwardTexels : glm::vec2(0.0f);
+  const glm::vec2 corners[4] = {a - along * kFinTexels + inward, b + along * kFinTexels + inward,
                                 b + (along + out) * kFinTexels, a + (out - along) * kFinTexels};
   // Another layer of the receiver beyond the edge (a rope over the mat) takes the caster between
-  // them as its shadow: no fin there (the texture holds one answer per texel).
-  if (!outline.nothing_beyond(p_world, q_world, corners)) return;
+  // them as its shadow: no fin there (the texture holds one answer per texel), but in a
+  // farthest-surface mask, where that layer's W wins where it is farther.
+  if (!farthest && !outline.nothing_beyond(p_world, q_world, corners)) return;
   std::vector<GrVertex> quad(4, p);
   for (int k = 0; k < 4; ++k) {
     quad[static_cast<std::size_t>(k)].x = corners[k].x;
@@ -421,7 +430,8 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     for (int k = 0; k < 3; ++k) {
       if (outline.contains(index[k], index[(k + 1) % 3])) {
         draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
-                 fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3]);
+                 fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3],
+                 farthest);
       }
     }
   }
