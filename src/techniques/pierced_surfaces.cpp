@@ -354,7 +354,8 @@ float depth_oow(const LightView &view, float light_w) {
   return 0.5f * std::max(view.caster_front, 1e-3f) / light_w;
 }
 
-void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest) {
+void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest,
+                       const std::vector<std::uint8_t> *triangles) {
   grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
   grDepthMask(FXTRUE);
   grDepthBufferFunction(farthest ? GR_CMP_GREATER : GR_CMP_LESS);
@@ -382,6 +383,9 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
   const Outline outline = outline_of(view, receiver, clip);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     if ((outside[t.x] & outside[t.y] & outside[t.z]) != 0) continue;
+    if (triangles && (*triangles)[static_cast<std::size_t>(&t - receiver.object->mesh.triangles.data())] == 0) {
+      continue;
+    }
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
     if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;  // faces away
     polygon.clear();
