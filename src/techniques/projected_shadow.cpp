@@ -162,8 +162,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
               job.view.caster_planes.push_back(plane);
               job.view.edge_planes.push_back(plane);
             } else if (pierced) {
-              mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing, farthest && !middle,
-                      middle ? &classes : nullptr};
+              mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing,
+                      farthest && !middle, middle ? &classes : nullptr};
             }
             const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
             auto step_start = Clock::now();
@@ -195,7 +195,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
                                                     job.view, options, &receivers,
                                                     middle ? &middle_bands : &bands, caster_back,
-                                                    &surfaces, classes.empty() ? nullptr : &classes);  // 3
+                                                    &surfaces,
+                                                    classes.empty() ? nullptr : &classes);  // 3
             finish_step(2, step_start);
             hidden_left = hidden_left || job.receivers.hidden_left;
             if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
@@ -299,7 +300,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         // shadow on that surface.
         const bool hidden_left = p.casts && cast(only, near, &p, false);
         // The receiver's parts its own surface hides from the light, masked by its farthest
-        // light-facing surface (step 3's band -2), when band -1 left some.
+        // light-facing surface (step 3's band -2), when band -1 left some; with a middle layer
+        // that may be shadowed, that layer masked by the hidden parts' nearest surface (-3).
         if (!p.planar && (hidden_left || !p.casts)) {
           near[p.receiver] = -2;
           cast(only, near, &p, true);

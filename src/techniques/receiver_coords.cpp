@@ -315,7 +315,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // surface (band -2), the others the one masked by its nearest (-1): a caster part that
       // the nearer surface hides still shadows the farther one (a cylinder sunk through a
       // dune, the dune's far slope; the truth lets light through a receiver that casts nothing,
-      // and one that casts shadows its far parts itself, uncounted). Beyond the plane (+1) the
+      // and one that casts shadows its far parts itself, uncounted). That texture is exact for
+      // the farthest layer only: with `hidden_classes` (hidden_layers.h), the hidden triangles
+      // that no other hidden one hides take band -3's instead. Beyond the plane (+1) the
       // whole caster's texture, except where the receiver hides nothing: the masked one, whole.
       if (band != 0 && (band < 0 || (any_outside & 0x40) != 0)) {
         if (!own_surface) {
