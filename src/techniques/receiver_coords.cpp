@@ -333,9 +333,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         if (band <= -2 && !hidden) continue;
         // The hidden ones split by their layer (hidden_layers.h): the middle layer's (kHiddenOnce)
         // take band -3's texture, masked by the hidden triangles' nearest surface.
-        if (hidden_classes && (*hidden_classes)[number] != (band == -3 ? kHiddenOnce : kHiddenTwice)) {
-          continue;
-        }
+        const std::uint8_t layer = band == -3 ? kHiddenOnce : kHiddenTwice;
+        if (hidden_classes && (*hidden_classes)[number] != layer) continue;
         if (!hidden) {
           if (band > 0) continue;  // the masked texture's, whole
           any_outside &= ~0x40u;
