@@ -65,7 +65,9 @@ float farthest_depth(const SceneObject &caster, const glm::mat4 &light_view);
 // With `farthest`, the surface keeps its farthest light-facing layer per pixel (depth test
 // GREATER on a clear to the nearest W) and the caster is then tested against that; its fins
 // along the outline from the light carry that layer's W over the texels just beyond it.
-void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest);
+// With `triangles`, only the receiver's triangles whose entry is not 0 (SurfaceMask::triangles).
+void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest,
+                       const std::vector<std::uint8_t> *triangles = nullptr);
 // 1/W for a light view w (metres along the light's axis): w over a unit of half the caster's
 // front distance, so the W-buffer (1/W in [0, 1]) keeps its precision for a light nearer than a
 // metre.

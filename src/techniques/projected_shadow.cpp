@@ -10,6 +10,7 @@
 #include "techniques/caster_surface_from_light.h"
 #include "techniques/contact_strips.h"
 #include "techniques/pierced_receivers.h"
+#include "techniques/hidden_layers.h"
 #include "techniques/receiver_layers.h"
 #include "techniques/slide_projector.h"
 
@@ -133,98 +134,112 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           GrTexInfo needed{shadow_lod(part.size), shadow_lod(part.size), GR_ASPECT_1x1,
                            GR_TEXFMT_ARGB_4444, nullptr};
           const FxU32 bytes = grTexTextureMemRequired(GR_MIPMAPLEVELMASK_BOTH, &needed);
-          if (!result.textures.can_hold(bytes)) {
-            result.errors.push_back("TMU memory is too small: '" + scene.objects[caster].name +
-                                    "' casts no shadow from light " + std::to_string(light) +
-                                    ", its " + std::to_string(part.size) + "x" +
-                                    std::to_string(part.size) + " texture needs " +
-                                    std::to_string(bytes) + " bytes");
-            return hidden_left;
-          }
-          ShadowJob job;
-          job.caster = caster;
-          job.light = light;
-          job.view = part;
-          SurfaceMask mask;
-          if (pierced && pierced->planar) {
-            // A world plane as a light-view plane: the inverse transpose of the view matrix.
-            const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * pierced->plane;
-            job.view.caster_planes.push_back(plane);
-            job.view.edge_planes.push_back(plane);
-          } else if (pierced) {
-            mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing, farthest};
-          }
-          const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
-          auto step_start = Clock::now();
-          CasterDraw draw;  // 1
-          if (pierced && pierced->planar) {
-            draw = cover_caster_from_light(scene, caster, job.view, options);
-          } else {
-            std::optional<std::pair<LightView, CasterDraw>> &shared = shared_covers[index];
-            if (!shared) {
-              shared.emplace(part, CasterDraw{});
-              shared->second = cover_caster_from_light(scene, caster, shared->first, options);
+          // A hidden pass (`farthest`) splits its triangles by layer when a middle layer may be in
+          // the shadow (hidden_layers.h): band -2 keeps the twice hidden ones, and band -3 takes
+          // the once hidden ones, masked by the hidden triangles' own nearest surface.
+          std::vector<std::uint8_t> classes;
+          if (farthest) classes = hidden_layers(frame.objects[pierced->receiver], part, surfaces);
+          std::vector<signed char> middle_bands;
+          if (!classes.empty()) middle_bands = bands, middle_bands[pierced->receiver] = -3;
+          for (int pass = 0; pass < (classes.empty() ? 1 : 2); ++pass) {
+            const bool middle = pass == 1;
+            if (!result.textures.can_hold(bytes)) {
+              result.errors.push_back("TMU memory is too small: '" + scene.objects[caster].name +
+                                      "' casts no shadow from light " + std::to_string(light) +
+                                      ", its " + std::to_string(part.size) + "x" +
+                                      std::to_string(part.size) + " texture needs " +
+                                      std::to_string(bytes) + " bytes");
+              return hidden_left;
             }
-            job.view = shared->first;
-            draw = shared->second;
-            if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
-            if (masked && draw.closed) {
-              job.view.contact_strips =
-                  contact_strips(job.view, pierced->contacts, scene.objects[caster],
-                                 frame.objects[pierced->receiver], scene.camera.position,
-                                 frame.view_projection);
+            ShadowJob job;
+            job.caster = caster;
+            job.light = light;
+            job.view = part;
+            SurfaceMask mask;
+            if (pierced && pierced->planar) {
+              // A world plane as a light-view plane: the inverse transpose of the view matrix.
+              const glm::vec4 plane = glm::transpose(glm::inverse(part.view)) * pierced->plane;
+              job.view.caster_planes.push_back(plane);
+              job.view.edge_planes.push_back(plane);
+            } else if (pierced) {
+              mask = {&frame.objects[pierced->receiver], &pierced->caster_crossing,
+                      farthest && !middle, middle ? &classes : nullptr};
             }
-          }
-          finish_step(0, step_start);
-          // Step 3 needs only step 1's cover, not its pixels: a texture whose receivers give step
-          // 5 nothing to draw and the footprint check nothing to measure changes no byte of the
-          // frame, so it is neither drawn nor read back (the other fighter, in front of a
-          // fighter's shadow, receives nothing from it in most frames of the demo).
-          step_start = Clock::now();
-          job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
-                                                  job.view, options, &receivers, &bands,
-                                                  caster_back, &surfaces);  // 3
-          finish_step(2, step_start);
-          hidden_left = hidden_left || job.receivers.hidden_left;
-          if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
-              std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),
-                           [](const ShadowTriangle &t) { return t.reaches_caster; })) {
-            add_note(job.view);
-            continue;
-          }
-          // A texture left unplaced is drawn on the direct path only when step 5 loads it.
-          const std::size_t id = texture_ids++;
-          const std::optional<FxU32> placed = result.textures.place(id, bytes);
-          const bool drawn_now = placed || !job.view.direct_path;
-          if (drawn_now) read_pending();
-          step_start = Clock::now();
-          if (job.view.direct_path) grGlideGetState(&job.step1_state);
-          if (drawn_now) {
-            draw_caster_from_light(scene, job.view, placed.value_or(0), masked, draw);  // 1
-            if (!job.view.direct_path) glideShimFlush();
-          }
-          finish_step(0, step_start);
-          if (!job.view.usable) {
-            if (placed) result.textures.release_from(*placed);
-            result.errors.push_back(job.view.problem);
-            continue;
-          }
-          add_note(job.view);
-          if (job.view.direct_path) {
+            const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
+            auto step_start = Clock::now();
+            CasterDraw draw;  // 1
+            if (pierced && pierced->planar) {
+              draw = cover_caster_from_light(scene, caster, job.view, options);
+            } else {
+              std::optional<std::pair<LightView, CasterDraw>> &shared = shared_covers[index];
+              if (!shared) {
+                shared.emplace(part, CasterDraw{});
+                shared->second = cover_caster_from_light(scene, caster, shared->first, options);
+              }
+              job.view = shared->first;
+              draw = shared->second;
+              if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
+              if (masked && draw.closed) {
+                job.view.contact_strips =
+                    contact_strips(job.view, pierced->contacts, scene.objects[caster],
+                                   frame.objects[pierced->receiver], scene.camera.position,
+                                   frame.view_projection);
+              }
+            }
+            finish_step(0, step_start);
+            // Step 3 needs only step 1's cover, not its pixels: a texture whose receivers give step
+            // 5 nothing to draw and the footprint check nothing to measure changes no byte of the
+            // frame, so it is neither drawn nor read back (the other fighter, in front of a
+            // fighter's shadow, receives nothing from it in most frames of the demo).
             step_start = Clock::now();
-            job.texture = placed ? make_shadow_texture(job.view, options, *placed)  // 2
-                                 : read_shadow_texture(job.view, options);
-            finish_step(1, step_start);
-          } else {
-            pending = PendingRead{id, placed};  // 2, read_pending
+            job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
+                                                    job.view, options, &receivers,
+                                                    middle ? &middle_bands : &bands, caster_back,
+                                                    &surfaces,
+                                                    classes.empty() ? nullptr : &classes);  // 3
+            finish_step(2, step_start);
+            hidden_left = hidden_left || job.receivers.hidden_left;
+            if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
+                std::none_of(job.receivers.triangles.begin(), job.receivers.triangles.end(),
+                             [](const ShadowTriangle &t) { return t.reaches_caster; })) {
+              add_note(job.view);
+              continue;
+            }
+            // A texture left unplaced is drawn on the direct path only when step 5 loads it.
+            const std::size_t id = texture_ids++;
+            const std::optional<FxU32> placed = result.textures.place(id, bytes);
+            const bool drawn_now = placed || !job.view.direct_path;
+            if (drawn_now) read_pending();
+            step_start = Clock::now();
+            if (job.view.direct_path) grGlideGetState(&job.step1_state);
+            if (drawn_now) {
+              draw_caster_from_light(scene, job.view, placed.value_or(0), masked, draw);  // 1
+              if (!job.view.direct_path) glideShimFlush();
+            }
+            finish_step(0, step_start);
+            if (!job.view.usable) {
+              if (placed) result.textures.release_from(*placed);
+              result.errors.push_back(job.view.problem);
+              continue;
+            }
+            add_note(job.view);
+            if (job.view.direct_path) {
+              step_start = Clock::now();
+              job.texture = placed ? make_shadow_texture(job.view, options, *placed)  // 2
+                                   : read_shadow_texture(job.view, options);
+              finish_step(1, step_start);
+            } else {
+              pending = PendingRead{id, placed};  // 2, read_pending
+            }
+            job.texture.id = id;
+            job.mask_farthest = masked && farthest && !middle;
+            if (job.view.direct_path) {
+              job.draw = std::move(draw);
+              if (masked) job.mask_receiver = pierced->receiver;
+              if (masked && middle) job.mask_triangles = classes;
+            }
+            caster_jobs.push_back(std::move(job));
           }
-          job.texture.id = id;
-          job.mask_farthest = masked && farthest;
-          if (job.view.direct_path) {
-            job.draw = std::move(draw);
-            if (masked) job.mask_receiver = pierced->receiver;
-          }
-          caster_jobs.push_back(std::move(job));
         }
         return hidden_left;
       };
@@ -285,7 +300,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         // shadow on that surface.
         const bool hidden_left = p.casts && cast(only, near, &p, false);
         // The receiver's parts its own surface hides from the light, masked by its farthest
-        // light-facing surface (step 3's band -2), when band -1 left some.
+        // light-facing surface (step 3's band -2), when band -1 left some; with a middle layer
+        // that may be shadowed, that layer masked by the hidden parts' nearest surface (-3).
         if (!p.planar && (hidden_left || !p.casts)) {
           near[p.receiver] = -2;
           cast(only, near, &p, true);

@@ -184,10 +184,13 @@ std::vector<LightView> split_into_textures(const LightView &view);
 // With `farthest`, the caster is drawn where it is nearer the light than the receiver's
 // farthest light-facing surface instead: the texture for the receiver's parts that its own
 // nearer surface hides from the light (receiver_coords.cpp, depth band -2).
+// With `triangles`, only the receiver's triangles whose entry (per mesh triangle) is not 0 are
+// drawn: the hidden ones' nearest surface, for their middle layer (band -3, hidden_layers.h).
 struct SurfaceMask {
   const ProjectedObject *receiver = nullptr;
   const std::vector<std::uint8_t> *caster_crossing = nullptr;
   bool farthest = false;
+  const std::vector<std::uint8_t> *triangles = nullptr;
 };
 void render_caster_from_light(const Scene &scene, std::size_t caster, LightView &view,
                               const ProjectedShadowOptions &options, FxU32 texture_address,
@@ -231,6 +234,7 @@ struct ShadowJob {
   // Every path: whether step 1 masked the caster by a receiver's farthest surface
   // (SurfaceMask::farthest), which the direct path's drawing again needs too.
   bool mask_farthest = false;
+  std::vector<std::uint8_t> mask_triangles;  // SurfaceMask::triangles of that mask; empty: all
   GrState step1_state{};
 };
 
@@ -258,7 +262,9 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // depth which no part of its receiver hides from the light takes the masked texture, uncut.
 // Nearer than that depth, -1 keeps only the triangles no part of the receiver hides from the
 // light (the texture masked by its nearest surface) and -2 only the others (the texture masked
-// by its farthest light-facing surface, SurfaceMask::farthest).
+// by its farthest light-facing surface, SurfaceMask::farthest). With `hidden` (hidden_layers'
+// classes of the receiver in band -2 or -3, per mesh triangle), -2 keeps only kHiddenTwice and
+// -3 only kHiddenOnce (the texture masked by the hidden triangles' nearest surface).
 // `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
@@ -266,7 +272,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const std::vector<bool> *receivers = nullptr,
                                        const std::vector<signed char> *depth_bands = nullptr,
                                        float caster_back = 0.0f,
-                                       CasterSurfacesFromLight *surfaces = nullptr);
+                                       CasterSurfacesFromLight *surfaces = nullptr,
+                                       const std::vector<std::uint8_t> *hidden = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended

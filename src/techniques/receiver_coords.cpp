@@ -6,6 +6,7 @@
 #include "techniques/projected_shadow.h"
 
 #include "techniques/caster_surface_from_light.h"
+#include "techniques/hidden_layers.h"
 #include "techniques/light_beam.h"
 #include "techniques/receiver_depth_planes.h"
 #include "techniques/silhouette_segment_grid.h"
@@ -193,7 +194,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const LightView &view, const ProjectedShadowOptions &options,
                                        const std::vector<bool> *receivers,
                                        const std::vector<signed char> *depth_bands,
-                                       float caster_back, CasterSurfacesFromLight *surfaces) {
+                                       float caster_back, CasterSurfacesFromLight *surfaces,
+                                       const std::vector<std::uint8_t> *hidden_classes) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -279,7 +281,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     // The depth band (light view space, -z against caster_back; the two bands' planes are each
     // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
     const signed char band = depth_bands ? (*depth_bands)[r] : 0;
-    // -1 and -2: keep -z <= back; +1: keep -z >= back
+    // -1, -2 and -3: keep -z <= back; +1: keep -z >= back
     const float side = band < 0 ? -1.0f : static_cast<float>(band);
     band_planes = view_planes;
     band_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
@@ -313,7 +315,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // surface (band -2), the others the one masked by its nearest (-1): a caster part that
       // the nearer surface hides still shadows the farther one (a cylinder sunk through a
       // dune, the dune's far slope; the truth lets light through a receiver that casts nothing,
-      // and one that casts shadows its far parts itself, uncounted). Beyond the plane (+1) the
+      // and one that casts shadows its far parts itself, uncounted). That texture is exact for
+      // the farthest layer only: with `hidden_classes` (hidden_layers.h), the hidden triangles
+      // that no other hidden one hides take band -3's instead. Beyond the plane (+1) the
       // whole caster's texture, except where the receiver hides nothing: the masked one, whole.
       if (band != 0 && (band < 0 || (any_outside & 0x40) != 0)) {
         if (!own_surface) {
@@ -326,7 +330,11 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
           coords.hidden_left = coords.hidden_left || (flags[t.x] & flags[t.y] & flags[t.z] & 0x40) == 0;
           continue;
         }
-        if (band == -2 && !hidden) continue;
+        if (band <= -2 && !hidden) continue;
+        // The hidden ones split by their layer (hidden_layers.h): the middle layer's (kHiddenOnce)
+        // take band -3's texture, masked by the hidden triangles' nearest surface.
+        const std::uint8_t layer = band == -3 ? kHiddenOnce : kHiddenTwice;
+        if (hidden_classes && (*hidden_classes)[number] != layer) continue;
         if (!hidden) {
           if (band > 0) continue;  // the masked texture's, whole
           any_outside &= ~0x40u;

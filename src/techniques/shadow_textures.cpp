@@ -61,6 +61,7 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
   SurfaceMask mask;
   if (job.mask_receiver) mask.receiver = &geometry.objects[*job.mask_receiver];
   mask.farthest = job.mask_farthest;
+  if (!job.mask_triangles.empty()) mask.triangles = &job.mask_triangles;
   draw_caster_flat(view, slot.address, job.mask_receiver ? &mask : nullptr, job.draw);
   grGlideSetState(&state);
   if (view.usable) return slot.address;
