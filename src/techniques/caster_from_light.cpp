@@ -374,8 +374,11 @@ void draw_caster_flat(LightView &view, FxU32 texture_address, const SurfaceMask 
   // A farthest-surface mask (SurfaceMask::farthest) keeps the greatest W its surface draws, so
   // its clear is the nearest.
   grBufferClear(0, 0, mask && mask->farthest ? GR_WDEPTHVALUE_NEAREST : GR_WDEPTHVALUE_FARTHEST);
-  // The caster only where it is nearer.
-  if (mask) draw_mask_surface(view, *mask->receiver, mask->farthest, mask->triangles);
+  if (mask) {
+    // The caster only where it is nearer.
+    draw_mask_surface(view, *mask->receiver, mask->farthest, mask->triangles);
+    grCullMode(draw.closed ? GR_CULL_POSITIVE : GR_CULL_DISABLE);  // the mask's strips draw unculled
+  }
   grDepthMask(FXFALSE);
   grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
                  GR_COMBINE_OTHER_NONE, FXFALSE);

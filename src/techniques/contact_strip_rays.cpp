@@ -3,6 +3,7 @@
 // light's axis) for the mask's near limit.
 #include "techniques/contact_strip_rays.h"
 
+#include "techniques/contact_strips.h"
 #include "techniques/projected_shadow.h"
 #include "techniques/projection.h"
 #include "techniques/scene_pass.h"
@@ -32,11 +33,11 @@ bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 
 
 }  // namespace
 
-ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &caster,
+ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &caster, bool closed,
                                    const ProjectedObject &receiver, const glm::vec3 &camera,
                                    const glm::mat4 &camera_clip, const glm::vec2 &low,
                                    const glm::vec2 &high)
-    : view_(view), camera_(camera), camera_clip_(camera_clip),
+    : view_(view), closed_(closed), camera_(camera), camera_clip_(camera_clip),
       light_clip_(view.projection * view.view), clip_to_world_(glm::inverse(light_clip_)) {
   const Mesh &mesh = caster_mesh(caster);
   std::vector<glm::vec3> world(mesh.positions.size());
@@ -132,7 +133,7 @@ bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
   const glm::vec3 direction = glm::vec3(far) / far.w - view_.position;
   const float w_at_light = (light_clip_ * glm::vec4(view_.position, 1.0f)).w;
   const float w_per_t = (light_clip_ * glm::vec4(direction, 0.0f)).w;
-  float first_front = INFINITY;  // the caster's first light-facing surface
+  float first_front = INFINITY;  // the caster's first surface step 1 draws
   hits_.clear();
   // A face's bounds widened by far more than the rounding of p's ray and of its corners' screen
   // positions (texels); the test is exact.
@@ -144,19 +145,25 @@ bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
       continue;
     }
     if (!meets(view_.position, direction, f->a, f->e1, f->e2, t) || !(t > 0.0f)) continue;
-    if (f->caster && f->light_facing) first_front = std::min(first_front, t);
+    if (f->caster && (f->light_facing || !closed_)) first_front = std::min(first_front, t);
     // Step 1's mask leaves out the receiver nearer the light than the caster's front.
     if (f->caster || w_at_light + w_per_t * t >= view_.caster_front) hits_.push_back({t, f});
   }
+  // An open caster's cut: a receiver point behind its surface by less than a strip's depth
+  // margin (light clip w) lies on the cut, in neither side's shadow (the sheet's base seen by
+  // the camera, meshes_12312).
+  const float on_cut = closed_ ? first_front
+                               : first_front + kContactStripDepthShare *
+                                                   (w_at_light / w_per_t + first_front);
   for (const Hit &h : hits_) {
-    if (h.face->caster || !h.face->camera_facing || !(h.t > first_front)) continue;
-    // Inside the caster (closed) when its next surface along the ray faces away from the light;
-    // outside when that one faces the light or there is none.
+    if (h.face->caster || !h.face->camera_facing || !(h.t > on_cut)) continue;
+    // Inside a closed caster when its next surface along the ray faces away from the light;
+    // outside when that one faces the light or there is none. An open one has no inside.
     const Hit *next = nullptr;
     for (const Hit &c : hits_) {
       if (c.face->caster && c.t > h.t && (!next || c.t < next->t)) next = &c;
     }
-    if (next && !next->face->light_facing) continue;
+    if (closed_ && next && !next->face->light_facing) continue;
     if (!hidden_from_camera(view_.position + direction * h.t)) return true;
   }
   return false;

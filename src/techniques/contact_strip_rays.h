@@ -23,11 +23,12 @@ struct SceneObject;
 
 class ContactStripRays {
  public:
-  // `caster` closed (step 1 culls its faces turned from the light), `receiver` the surface that
-  // masks it, `camera` the scene camera's position (world) and `camera_clip` its world to clip
+  // `caster` `closed` (step 1 culls its faces turned from the light) or open (drawn from both
+  // sides: a receiver point behind any of its faces is in its shadow), `receiver` the surface
+  // that masks it, `camera` the scene camera's position (world) and `camera_clip` its world to clip
   // matrix. Rays are cast only within low..high (the light's screen, texels): receiver
   // triangles whose bounds miss it are left out. `view` is kept by reference.
-  ContactStripRays(const LightView &view, const SceneObject &caster,
+  ContactStripRays(const LightView &view, const SceneObject &caster, bool closed,
                    const ProjectedObject &receiver, const glm::vec3 &camera,
                    const glm::mat4 &camera_clip, const glm::vec2 &low, const glm::vec2 &high);
 
@@ -70,6 +71,7 @@ class ContactStripRays {
   bool hidden_from_camera(const glm::vec3 &point) const;
 
   const LightView &view_;
+  bool closed_;
   glm::vec3 camera_;
   glm::mat4 camera_clip_, light_clip_, clip_to_world_;
   std::vector<Face> faces_;    // the caster's first, then the receiver's

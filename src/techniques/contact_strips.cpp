@@ -41,7 +41,7 @@ std::vector<ContactSegment> contact_segments(std::vector<ContactPoint> points) {
 
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,
-                                                    const SceneObject &caster,
+                                                    const SceneObject &caster, bool closed,
                                                     const ProjectedObject &receiver,
                                                     const glm::vec3 &camera,
                                                     const glm::mat4 &camera_clip) {
@@ -79,7 +79,7 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
   glm::vec2 rays_low(INFINITY), rays_high(-INFINITY);
   for (const ContactSegment &c : contacts) {
     if (glm::dot(c.receiver_normal, view.position - c.a) <= 0.0f ||
-        glm::dot(c.caster_normal, view.position - c.a) <= 0.0f) {
+        (closed && glm::dot(c.caster_normal, view.position - c.a) <= 0.0f)) {
       continue;  // not drawn in step 1 (the receiver's mask, the closed caster): no cut to hide
     }
     const glm::vec4 clip_a = light_clip * glm::vec4(c.a, 1.0f);
@@ -117,7 +117,7 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
     const int rows = static_cast<int>(std::ceil(2.0f * margin / step)) + 1;
     const glm::vec2 ends[4] = {at(-margin, -margin), at(screen_length + margin, margin),
                                at(-margin, margin), at(screen_length + margin, -margin)};
-    if (!rays) rays.emplace(view, caster, receiver, camera, camera_clip, rays_low, rays_high);
+    if (!rays) rays.emplace(view, caster, closed, receiver, camera, camera_clip, rays_low, rays_high);
     rays->select(glm::min(glm::min(ends[0], ends[1]), glm::min(ends[2], ends[3])),
                 glm::max(glm::max(ends[0], ends[1]), glm::max(ends[2], ends[3])));
     for (int i = 0; i < columns; ++i) {
@@ -163,9 +163,9 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
         float w_receiver = 0.0f, w_caster = 0.0f;
         placed = w_on_plane(corners[i], c.receiver_normal, c.a, w_receiver) &&
                  w_on_plane(corners[i], c.caster_normal, c.a, w_caster);
-        // A few W-buffer codes (4096 an octave) nearer than both planes, and no nearer than
-        // depth_oow's unit (1/W at most 1).
-        const float w = std::max(std::min(w_receiver, w_caster) * (1.0f - 2e-3f),
+        // A few W-buffer codes nearer than both planes, and no nearer than depth_oow's unit
+        // (1/W at most 1).
+        const float w = std::max(std::min(w_receiver, w_caster) * (1.0f - kContactStripDepthShare),
                                  0.5f * std::max(view.caster_front, 1e-3f));
         std::memset(&strip[static_cast<std::size_t>(i)], 0, sizeof(GrVertex));
         strip[static_cast<std::size_t>(i)].x = corners[i].x;

@@ -9,8 +9,12 @@
 // the caster's triangle lies behind the surface by less than a W-buffer code near the line, so
 // step 1's depth test there is a coin toss. Step 1 keeps that caster triangle out of a strip of
 // texels on both sides of the line, as deep as filtering reaches: the visible side reads no
-// covered texel from it. Spaces: world in; the light's size x size Glide screen (texels, y down)
-// with 1/W from depth_oow out.
+// covered texel from it. An open caster (a sheet, drawn from both sides) cut by the receiver is
+// the same but for its hidden side: the receiver there lies behind the sheet's part above it,
+// in shadow, and the strip is kept only where the camera sees none of it (the sheet hides it;
+// issue 14, meshes_12312: a crumpled sheet through dunes under a low light, 0.111% false shadow
+// on the dunes in front of it). Spaces: world in; the light's size x size Glide screen (texels,
+// y down) with 1/W from depth_oow out.
 #pragma once
 
 #include <glide.h>
@@ -51,8 +55,14 @@ std::vector<ContactSegment> contact_segments(std::vector<ContactPoint> points);
 // filtering reads texel centres less than one texel away on each axis, and the half texel more
 // absorbs the shim's 1/16 snapping, as the receiver outline's fins do (pierced_surfaces.cpp).
 constexpr float kContactStripTexels = 1.5f;
+// How much nearer the light than the caster's and the receiver's planes a strip's corners lie,
+// as a share of their light clip w: a few W-buffer codes (4096 an octave). A receiver point
+// behind an open caster's surface by less than that is on the cut, where step 1's depth test
+// cannot tell its sides apart (contact_strip_rays.h).
+constexpr float kContactStripDepthShare = 2e-3f;
 
-// The strips of `contacts` whose receiver and caster triangles both face the light, in the
+// The strips of `contacts` whose receiver triangle faces the light, and its caster triangle too
+// when the caster is `closed` (step 1 culls its other faces; an open one is drawn whole), in the
 // light's screen of `view`, each a quad a little nearer the light than the caster's triangle
 // (and the receiver's) at its corners, so the caster fails step 1's depth test there. A strip
 // keeps only that triangle's plane out: a farther part of the caster in front of the receiver
@@ -62,7 +72,7 @@ constexpr float kContactStripTexels = 1.5f;
 // lights no receiver point the caster shadows.
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,
-                                                    const SceneObject &caster,
+                                                    const SceneObject &caster, bool closed,
                                                     const ProjectedObject &receiver,
                                                     const glm::vec3 &camera,
                                                     const glm::mat4 &camera_clip);

@@ -439,15 +439,14 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     }
   }
   // Beside the caster's cut by this surface, on its hidden side, the caster is kept out as far
-  // as filtering reaches (contact_strips.h); drawn whatever their winding (the caster is closed,
-  // so step 1 culls with GR_CULL_POSITIVE, which it gets back).
+  // as filtering reaches (contact_strips.h); drawn whatever their winding (step 1 sets its
+  // caster's cull mode again after this).
   if (!view.contact_strips.empty()) grCullMode(GR_CULL_DISABLE);
   for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
     glm::vec2 low(INFINITY), high(-INFINITY);
     for (const GrVertex &v : strip) low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
     if (view.covered_near(low, high, 1.0f)) draw_fan(std::vector<GrVertex>(strip.begin(), strip.end()));
   }
-  if (!view.contact_strips.empty()) grCullMode(GR_CULL_POSITIVE);
   grColorMask(FXTRUE, FXFALSE);
   grDepthMask(FXFALSE);
   grDepthBufferFunction(GR_CMP_LESS);  // the caster, nearer than the surface kept

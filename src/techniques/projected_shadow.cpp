@@ -179,9 +179,9 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
               job.view = shared->first;
               draw = shared->second;
               if (masked) mask_caster_cover(scene, caster, job.view, *masked, draw);
-              if (masked && draw.closed) {
+              if (masked) {
                 job.view.contact_strips =
-                    contact_strips(job.view, pierced->contacts, scene.objects[caster],
+                    contact_strips(job.view, pierced->contacts, scene.objects[caster], draw.closed,
                                    frame.objects[pierced->receiver], scene.camera.position,
                                    frame.view_projection);
               }
