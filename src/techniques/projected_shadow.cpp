@@ -121,6 +121,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       CasterSurfacesFromLight surfaces(scene.objects[caster]);  // step 3's, shared the same way
       // With `farthest`, the non-planar `pierced` receiver's mask is its farthest surface
       // (SurfaceMask::farthest). Returns whether a texture's band -1 left a triangle to band -2.
+      const std::vector<std::uint8_t> *over_buried = nullptr;  // the pierced receiver's
       auto cast = [&](const std::vector<bool> &receivers, const std::vector<signed char> &bands,
                       const PiercedReceiver *pierced, bool farthest) {
         bool hidden_left = false;
@@ -183,7 +184,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           step_start = Clock::now();
           job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
                                                   job.view, options, &receivers, &bands,
-                                                  caster_back, &surfaces);  // 3
+                                                  caster_back, &surfaces, over_buried);  // 3
           finish_step(2, step_start);
           hidden_left = hidden_left || job.receivers.hidden_left;
           if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
@@ -281,6 +282,10 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         only[p.receiver] = true;
         std::vector<signed char> near(scene.objects.size(), 0);
         if (!p.planar) near[p.receiver] = -1;
+        over_buried = nullptr;
+        for (const auto &[r, marks] : layers.over_buried) {
+          if (r == p.receiver) over_buried = &marks;
+        }
         // Nothing of the caster on the light's side of the receiver's nearest surface: no
         // shadow on that surface.
         const bool hidden_left = p.casts && cast(only, near, &p, false);
@@ -291,6 +296,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           cast(only, near, &p, true);
         }
       }
+      over_buried = nullptr;
       std::vector<FootprintSample> samples;
       for (const ShadowJob &job : caster_jobs) {
         samples.insert(samples.end(), job.receivers.footprints.begin(), job.receivers.footprints.end());
