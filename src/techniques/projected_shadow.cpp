@@ -282,10 +282,15 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         only[p.receiver] = true;
         std::vector<signed char> near(scene.objects.size(), 0);
         if (!p.planar) near[p.receiver] = -1;
-        over_buried = nullptr;
+        // Band -1's triangles among those the receiver's surface hides in part: the ones the
+        // caster passes through, or in front of a caster part with a farther layer behind.
+        std::vector<std::uint8_t> front_marks = p.receiver_crossing;
         for (const auto &[r, marks] : layers.over_buried) {
-          if (r == p.receiver) over_buried = &marks;
+          if (r != p.receiver) continue;
+          front_marks.resize(marks.size(), 0);
+          for (std::size_t k = 0; k < marks.size(); ++k) front_marks[k] |= marks[k];
         }
+        over_buried = front_marks.empty() ? nullptr : &front_marks;
         // Nothing of the caster on the light's side of the receiver's nearest surface: no
         // shadow on that surface.
         const bool hidden_left = p.casts && cast(only, near, &p, false);

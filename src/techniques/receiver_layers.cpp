@@ -255,6 +255,10 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     // it behind (ReceiverLayers::over_buried), over all samples.
     std::vector<std::uint8_t> over_buried(receiver.object->mesh.triangles.size(), 0);
     bool any_over_buried = false;
+    // Samples with light-facing triangles in front and none found behind yet, each with where
+    // its triangles' numbers begin in unsure_numbers.
+    std::vector<std::pair<const EdgeSample *, std::size_t>> unsure_fronts;
+    std::vector<std::size_t> unsure_numbers;
     for (const EdgeSample &s : samples) {
       const std::size_t cell =
           static_cast<std::size_t>(layer_cell_of(s.ndc.y) * kLayerGrid + layer_cell_of(s.ndc.x));
@@ -288,12 +292,28 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       if (lit_behind) {
         for (std::size_t number : fronts) over_buried[number] = 1;
         any_over_buried = any_over_buried || !fronts.empty();
+      } else if (!fronts.empty()) {
+        unsure_fronts.push_back({&s, unsure_numbers.size()});
+        unsure_numbers.insert(unsure_numbers.end(), fronts.begin(), fronts.end());
       }
-
       if (outside || buried) unresolved.push_back(&s);
     }
-    if (!between && !unresolved.empty() && !behind.empty()) {
+    if (!behind.empty() && (!unsure_fronts.empty() || (!between && !unresolved.empty()))) {
       bucket_layer_triangles(behind, sample_low, sample_high, grid);
+    }
+    // A lit layer wholly behind every sample, behind a sample with triangles in front of it.
+    for (std::size_t k = 0; k < unsure_fronts.size() && !behind.empty(); ++k) {
+      const glm::vec2 &ndc = unsure_fronts[k].first->ndc;
+      const auto [first, last] = cell_at(ndc);
+      glm::vec3 l;
+      if (std::none_of(first, last, [&](std::size_t i) { return layer_weights(behind[i], ndc, l); }))
+        continue;
+      const std::size_t end =
+          k + 1 < unsure_fronts.size() ? unsure_fronts[k + 1].second : unsure_numbers.size();
+      for (std::size_t j = unsure_fronts[k].second; j < end; ++j) over_buried[unsure_numbers[j]] = 1;
+      any_over_buried = true;
+    }
+    if (!between && !unresolved.empty() && !behind.empty()) {
       for (const EdgeSample *s : unresolved) {
         const auto [first, last] = cell_at(s->ndc);
         for (const std::size_t *i = first; i != last && !between; ++i) {
