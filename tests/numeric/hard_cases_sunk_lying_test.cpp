@@ -27,7 +27,7 @@ void expect_projected_right(const std::string &file) {
 }  // namespace
 
 // Before: 0.514% / 0.520% (sk1, the audit's scene), 0.289% / 0.296% (sk2), served.
-TEST(HardCases, CylindersLyingThroughDunesLightNoSlopeFromBehind) {
+TEST(HardCases, CylindersLyingThroughDunesShadowNoLitSlopeFromBehind) {
   expect_projected_right("audit/sk1_two_cylinders_lying_through_dunes.json");
   expect_projected_right("audit/sk2_wide_open_cylinder_through_dunes.json");
 }
