@@ -16,25 +16,25 @@
 
 using namespace hard_cases;  // the checks of hard_case_checks.h
 
-namespace {
+namespace {  // names of their own: the unity build joins this file with the sd tests
 
-const std::vector<std::string> kProjected = {"projected", "projected-chroma"};
+const std::vector<std::string> kProjectedLying = {"projected", "projected-chroma"};
 
-void expect_projected_right(const std::string &file) {
-  expect_these_right_or_refused(file, load(file), kProjected, {}, true);
+void expect_lying_right(const std::string &file) {
+  expect_these_right_or_refused(file, load(file), kProjectedLying, {}, true);
 }
 
 }  // namespace
 
 // Before: 0.514% / 0.520% (sk1, the audit's scene), 0.289% / 0.296% (sk2), served.
 TEST(HardCases, CylindersLyingThroughDunesShadowNoLitSlopeFromBehind) {
-  expect_projected_right("audit/sk1_two_cylinders_lying_through_dunes.json");
-  expect_projected_right("audit/sk2_wide_open_cylinder_through_dunes.json");
+  expect_lying_right("audit/sk1_two_cylinders_lying_through_dunes.json");
+  expect_lying_right("audit/sk2_wide_open_cylinder_through_dunes.json");
 }
 
 // Before: 0.522% / 0.529% (sk5), 0.135% / 0.135% (sk7), served; sk6 right before and now.
 TEST(HardCases, CylindersLyingThroughOtherDunesAndLights) {
-  expect_projected_right("audit/sk5_cylinders_through_taller_dunes.json");
-  expect_projected_right("audit/sk7_cylinders_through_dunes_lower_light.json");
-  expect_projected_right("audit/sk6_cylinders_moved_through_dunes.json");
+  expect_lying_right("audit/sk5_cylinders_through_taller_dunes.json");
+  expect_lying_right("audit/sk7_cylinders_through_dunes_lower_light.json");
+  expect_lying_right("audit/sk6_cylinders_moved_through_dunes.json");
 }
