@@ -29,6 +29,9 @@ struct PiercedReceiver {
   // Not planar: per triangle of the caster's mesh (caster_mesh), 1 where it passes through the
   // receiver's surface (its cut by the surface is an edge of the shadow).
   std::vector<std::uint8_t> caster_crossing;
+  // Not planar: per triangle of the receiver's mesh, 1 where the caster's surface passes
+  // through it.
+  std::vector<std::uint8_t> receiver_crossing;
   // Not planar: where a caster triangle and a receiver triangle pass through each other, the
   // segment (world) they share, with each one's unit normal (as wound, world): step 1 keeps the
   // caster out of the texels beside it on the caster's inside (contact_strips.h).

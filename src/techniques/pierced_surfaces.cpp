@@ -326,6 +326,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
       caster_world, caster_triangles, box_low, box_high, glm::max(box_low, surface_low - margin),
       glm::min(box_high, surface_high + margin), caster, caster_index);
   pierced.caster_crossing.assign(caster_triangles.size(), 0);
+  pierced.receiver_crossing.assign(receiver.object->mesh.triangles.size(), 0);
   bool any = false;
   std::vector<ContactPoint> points;  // each crossing point (world) with its pair of triangles
   // The caster's edges through the receiver's triangles, and the receiver's through the caster's.
@@ -340,6 +341,7 @@ bool pierced_surface(const ProjectedObject &receiver, const std::vector<glm::vec
           for (std::size_t f : cell) {
             if (!crosses(faces[f], p, q, tolerance)) continue;
             pierced.caster_crossing[edges_are_caster ? caster_index[e] : caster_index[f]] = 1;
+            pierced.receiver_crossing[surface_index[edges_are_caster ? f : e]] = 1;
             any = true;
             const float dp = glm::dot(faces[f].normal, p - faces[f].a);
             const float dq = glm::dot(faces[f].normal, q - faces[f].a);

@@ -122,6 +122,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       CasterSurfacesFromLight surfaces(scene.objects[caster]);  // step 3's, shared the same way
       // With `farthest`, the non-planar `pierced` receiver's mask is its farthest surface
       // (SurfaceMask::farthest). Returns whether a texture's band -1 left a triangle to band -2.
+      const std::vector<std::uint8_t> *over_buried = nullptr;  // the pierced receiver's
       auto cast = [&](const std::vector<bool> &receivers, const std::vector<signed char> &bands,
                       const PiercedReceiver *pierced, bool farthest) {
         bool hidden_left = false;
@@ -195,8 +196,8 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
             job.receivers = compute_receiver_coords(scene, frame, caster, scene.lights[light],
                                                     job.view, options, &receivers,
                                                     middle ? &middle_bands : &bands, caster_back,
-                                                    &surfaces,
-                                                    classes.empty() ? nullptr : &classes);  // 3
+                                                    &surfaces, classes.empty() ? nullptr : &classes,
+                                                    over_buried);  // 3
             finish_step(2, step_start);
             hidden_left = hidden_left || job.receivers.hidden_left;
             if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
@@ -296,6 +297,15 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         only[p.receiver] = true;
         std::vector<signed char> near(scene.objects.size(), 0);
         if (!p.planar) near[p.receiver] = -1;
+        // Band -1's triangles among those the receiver's surface hides in part: the ones the
+        // caster passes through, or in front of a caster part with a farther layer behind.
+        std::vector<std::uint8_t> front_marks = p.receiver_crossing;
+        for (const auto &[r, marks] : layers.over_buried) {
+          if (r != p.receiver) continue;
+          front_marks.resize(marks.size(), 0);
+          for (std::size_t k = 0; k < marks.size(); ++k) front_marks[k] |= marks[k];
+        }
+        over_buried = front_marks.empty() ? nullptr : &front_marks;
         // Nothing of the caster on the light's side of the receiver's nearest surface: no
         // shadow on that surface.
         const bool hidden_left = p.casts && cast(only, near, &p, false);
@@ -307,6 +317,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           cast(only, near, &p, true);
         }
       }
+      over_buried = nullptr;
       std::vector<FootprintSample> samples;
       for (const ShadowJob &job : caster_jobs) {
         samples.insert(samples.end(), job.receivers.footprints.begin(), job.receivers.footprints.end());

@@ -266,6 +266,8 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // classes of the receiver in band -2 or -3, per mesh triangle), -2 keeps only kHiddenTwice and
 // -3 only kHiddenOnce (the texture masked by the hidden triangles' nearest surface).
 // `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
+// `over_buried`, when given, marks per triangle of the receiver in band -1 or -2 those in front of
+// a caster part with a farther layer of it behind (ReceiverLayers::over_buried): band -1's.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
@@ -273,7 +275,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const std::vector<signed char> *depth_bands = nullptr,
                                        float caster_back = 0.0f,
                                        CasterSurfacesFromLight *surfaces = nullptr,
-                                       const std::vector<std::uint8_t> *hidden = nullptr);
+                                       const std::vector<std::uint8_t> *hidden = nullptr,
+                                       const std::vector<std::uint8_t> *over_buried = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended

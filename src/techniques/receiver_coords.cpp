@@ -195,7 +195,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const std::vector<bool> *receivers,
                                        const std::vector<signed char> *depth_bands,
                                        float caster_back, CasterSurfacesFromLight *surfaces,
-                                       const std::vector<std::uint8_t> *hidden_classes) {
+                                       const std::vector<std::uint8_t> *hidden_classes,
+                                       const std::vector<std::uint8_t> *over_buried) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -325,7 +326,10 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                            std::max(view.caster_front, 1e-6f));
         }
         const glm::vec4 corners[3] = {lc[t.x], lc[t.y], lc[t.z]};
-        const bool hidden = own_surface->may_shadow_triangle(*receiver.object, number, corners);
+        // A triangle in front of a caster part with a farther layer behind (over_buried) would
+        // take that part's shadow from band -2's texture: band -1's, as if nothing hid it.
+        const bool hidden = own_surface->may_shadow_triangle(*receiver.object, number, corners) &&
+                            !(band < 0 && over_buried && (*over_buried)[number] != 0);
         if (band == -1 && hidden) {
           coords.hidden_left = coords.hidden_left || (flags[t.x] & flags[t.y] & flags[t.z] & 0x40) == 0;
           continue;

@@ -38,6 +38,7 @@ struct LayerTriangle {
   bool faces_light = false;
   bool shaded = false;         // step 3 may shade it with the caster's shadow
   float nearest_w = 0.0f;      // the least of its vertices' w: no point of it is nearer
+  std::size_t number = 0;      // in the receiver's mesh
 };
 
 // 1 / w interpolated with barycentric weights that are not negative and sum to 1 (both to a
@@ -182,6 +183,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   };
   std::vector<float> cell_hiding;  // per grid cell, the nearest light-facing shaded triangle's w
   std::vector<const EdgeSample *> unresolved;  // outside and hidden, nothing lit behind found yet
+  std::vector<std::size_t> fronts;  // a sample's light-facing shaded triangles in front of it
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
     if (r == caster || !receiver.object->receives_shadow) continue;
@@ -217,6 +219,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       // Wholly behind every sample: it can only be a lit layer behind one (looked at below, if
       // some sample needs it).
       lt.nearest_w = std::min(va.w, std::min(vb.w, vc.w));
+      lt.number = static_cast<std::size_t>(&t - receiver.object->mesh.triangles.data());
       if (lt.nearest_w > farthest_sample + tolerance) {
         if (lt.faces_light) behind.push_back(lt);
         continue;
@@ -248,6 +251,14 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     }
     bool hides = false, between = false;
     unresolved.clear();
+    // The receiver's light-facing triangles in front of a sample with a light-facing layer of
+    // it behind (ReceiverLayers::over_buried), over all samples.
+    std::vector<std::uint8_t> over_buried(receiver.object->mesh.triangles.size(), 0);
+    bool any_over_buried = false;
+    // Samples with light-facing triangles in front and none found behind yet, each with where
+    // its triangles' numbers begin in unsure_numbers.
+    std::vector<std::pair<const EdgeSample *, std::size_t>> unsure_fronts;
+    std::vector<std::size_t> unsure_numbers;
     for (const EdgeSample &s : samples) {
       const std::size_t cell =
           static_cast<std::size_t>(layer_cell_of(s.ndc.y) * kLayerGrid + layer_cell_of(s.ndc.x));
@@ -255,6 +266,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       float nearest_front = -INFINITY;  // the receiver surface just in front of the sample
       bool front_faces_light = false, hidden = false, lit_behind = false;
       const auto [first, last] = cell_at(s.ndc);
+      fronts.clear();
       for (const std::size_t *i = first; i != last; ++i) {
         const LayerTriangle &lt = triangles[*i];
         glm::vec3 l;
@@ -263,6 +275,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
         if (w < s.w - tolerance) {
           if (w > nearest_front) nearest_front = w, front_faces_light = lt.faces_light;
           hidden = hidden || (lt.faces_light && lt.shaded && w >= view.caster_front);
+          if (lt.faces_light && lt.shaded) fronts.push_back(lt.number);
         } else if (w > s.w + tolerance) {
           lit_behind = lit_behind || lt.faces_light;
         }
@@ -276,11 +289,31 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
       const bool buried = hidden && front_faces_light && known == pierced.end();
       hides = hides || outside || buried;
       between = between || ((outside || buried) && lit_behind);
-      if (between) break;
+      if (lit_behind) {
+        for (std::size_t number : fronts) over_buried[number] = 1;
+        any_over_buried = any_over_buried || !fronts.empty();
+      } else if (!fronts.empty()) {
+        unsure_fronts.push_back({&s, unsure_numbers.size()});
+        unsure_numbers.insert(unsure_numbers.end(), fronts.begin(), fronts.end());
+      }
       if (outside || buried) unresolved.push_back(&s);
     }
-    if (!between && !unresolved.empty() && !behind.empty()) {
+    if (!behind.empty() && (!unsure_fronts.empty() || (!between && !unresolved.empty()))) {
       bucket_layer_triangles(behind, sample_low, sample_high, grid);
+    }
+    // A lit layer wholly behind every sample, behind a sample with triangles in front of it.
+    for (std::size_t k = 0; k < unsure_fronts.size() && !behind.empty(); ++k) {
+      const glm::vec2 &ndc = unsure_fronts[k].first->ndc;
+      const auto [first, last] = cell_at(ndc);
+      glm::vec3 l;
+      if (std::none_of(first, last, [&](std::size_t i) { return layer_weights(behind[i], ndc, l); }))
+        continue;
+      const std::size_t end =
+          k + 1 < unsure_fronts.size() ? unsure_fronts[k + 1].second : unsure_numbers.size();
+      for (std::size_t j = unsure_fronts[k].second; j < end; ++j) over_buried[unsure_numbers[j]] = 1;
+      any_over_buried = true;
+    }
+    if (!between && !unresolved.empty() && !behind.empty()) {
       for (const EdgeSample *s : unresolved) {
         const auto [first, last] = cell_at(s->ndc);
         for (const std::size_t *i = first; i != last && !between; ++i) {
@@ -292,6 +325,7 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
     }
     if (hides) layers.hiding.push_back(r);
     if (between) layers.between.push_back(r);
+    if (any_over_buried) layers.over_buried.emplace_back(r, std::move(over_buried));
   }
   return layers;
 }

@@ -12,7 +12,9 @@
 #include "techniques/pierced_receivers.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs {
@@ -25,6 +27,12 @@ struct ReceiverLayers {
   // surface in front of it faces away from the light) with a light-facing surface of the same
   // receiver behind it: that surface is in the sample's shadow, the nearer one is not.
   std::vector<std::size_t> between;
+  // Per receiver the caster passes through (PiercedReceiver::receiver) with a caster sample
+  // inside it: per triangle of its mesh, 1 where the triangle faces the light and lies in front
+  // of such a sample that has a light-facing surface of the same receiver behind it. The
+  // texture masked by the farthest surface (band -2) holds that sample, which is behind the
+  // triangle and cannot shadow it (compute_receiver_coords' `over_buried`).
+  std::vector<std::pair<std::size_t, std::vector<std::uint8_t>>> over_buried;
 };
 
 // Tests every non-planar receiver of `caster`'s shadow not already in `pierced` (and the
