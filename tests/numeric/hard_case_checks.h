@@ -220,11 +220,18 @@ inline void expect_right_or_refused(const std::string &file, const gs::Scene &sc
   expect_these_right_or_refused(file, scene, kTechniques, refusals, only_in_beam);
 }
 
-
 inline void expect_right_or_refused(const std::string &file,
                                     const std::map<std::string, std::string> &refusals = {},
                                     bool only_in_beam = true) {
   expect_right_or_refused(file, hard_cases::load(file), refusals, only_in_beam);
+}
+
+// The two projected techniques (the texture read bilinear, and by chroma key).
+inline const std::vector<std::string> kProjectedTechniques = {"projected", "projected-chroma"};
+
+// Both projected techniques on the scene of `file` served within the budget, none refusing.
+inline void expect_projected_right(const std::string &file) {
+  expect_these_right_or_refused(file, hard_cases::load(file), kProjectedTechniques, {}, true);
 }
 
 }  // namespace hard_cases

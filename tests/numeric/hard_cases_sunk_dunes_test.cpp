@@ -22,10 +22,6 @@ namespace {
 
 const std::vector<std::string> kProjected = {"projected", "projected-chroma"};
 
-void expect_projected_right(const std::string &file) {
-  expect_these_right_or_refused(file, load(file), kProjected, {}, true);
-}
-
 // A caster part between two layers of dunes that cast: refused by name.
 void expect_projected_refused(const std::string &file, const std::string &caster) {
   const std::string message =

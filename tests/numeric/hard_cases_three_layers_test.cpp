@@ -11,20 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include <string>
-#include <vector>
-
 using namespace hard_cases;  // the checks of hard_case_checks.h
-
-namespace {
-
-const std::vector<std::string> kProjected = {"projected", "projected-chroma"};
-
-void expect_projected_right(const std::string &file) {
-  expect_these_right_or_refused(file, load(file), kProjected, {}, true);
-}
-
-}  // namespace
 
 // Before: 0.234% (tl1), 0.079% (tl2), 0.056% (tl3) interior false shadow on the middle plate.
 TEST(HardCases, PoleThroughTheMiddleOfThreePlatesLeavesItLit) {
