@@ -53,7 +53,7 @@ std::vector<ContactSegment> contact_segments(std::vector<ContactPoint> points);
 
 // Texels from the line the strip reaches on each side (and beyond each end): bilinear
 // filtering reads texel centres less than one texel away on each axis, and the half texel more
-// absorbs the shim's 1/16 snapping, as the receiver outline's fins do (pierced_surfaces.cpp).
+// absorbs the shim's 1/16 snapping, as the receiver outline's fins do (receiver_mask_surface.cpp).
 constexpr float kContactStripTexels = 1.5f;
 // How much nearer the light than the caster's and the receiver's planes a strip's corners lie,
 // as a share of their light clip w: a few W-buffer codes (4096 an octave). A receiver point

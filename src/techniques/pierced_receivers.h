@@ -5,7 +5,7 @@
 // texture (projected_shadow.cpp): for a planar receiver the caster clipped to the light's side of
 // its plane; for any other the caster drawn only where it is nearer the light than the
 // receiver's light-facing surface (step 1 draws that surface into its depth buffer first,
-// pierced_surfaces.cpp). docs/hard_cases_results.md measures both and their cost.
+// receiver_mask_surface.cpp). docs/hard_cases_results.md measures both and their cost.
 #pragma once
 
 #include "techniques/contact_strips.h"
