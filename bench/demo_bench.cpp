@@ -5,7 +5,7 @@
 // on its first draw). `--only none|lfb|direct --frames N` draws N frames of one mode untimed, for
 // callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces the shim's fast paths off.
 #include "scene/fight_scene.h"
-#include "techniques/projected_shadow.h"
+#include "techniques/projected/projected_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>

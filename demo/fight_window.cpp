@@ -7,7 +7,7 @@
 
 #include "cli/options.h"
 #include "figures/figures_kit.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 #include "window_overlay.h"
 
 #include <glide_shim.h>

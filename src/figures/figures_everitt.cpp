@@ -7,8 +7,8 @@
 
 #include "measure/ground_truth.h"
 #include "measure/metrics.h"
-#include "techniques/projection.h"
-#include "techniques/scene_pass.h"
+#include "techniques/geometry/projection.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glideutl.h>
 #include <glm/gtc/matrix_transform.hpp>

@@ -5,7 +5,7 @@
 
 #include "scene/fighter.h"
 #include "measure/plot.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide_shim.h>
 #include <glm/gtc/matrix_transform.hpp>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "figures/figures.h"
-#include "techniques/projected_shadow.h"
+#include "techniques/projected/projected_shadow.h"
 #include "scene/scene.h"
 #include "techniques/technique.h"
 

@@ -9,7 +9,7 @@
 #include "scene/fighter.h"
 #include "measure/ground_truth.h"
 #include "measure/metrics.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide_shim.h>
 #include <glideutl.h>

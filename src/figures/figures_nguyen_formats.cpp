@@ -4,7 +4,7 @@
 #include "figures/figures_kit.h"
 
 #include "measure/plot.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <algorithm>
 

@@ -4,8 +4,8 @@
 #include "figures/figures_kit.h"
 #include "figures/nguyen_steps.h"
 
-#include "techniques/planar_shadow.h"
-#include "techniques/scene_pass.h"
+#include "techniques/planar/planar_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide.h>
 

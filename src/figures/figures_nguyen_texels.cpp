@@ -6,7 +6,7 @@
 #include "figures/nguyen_steps.h"
 
 #include "measure/metrics.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide_shim.h>
 #include <glideutl.h>

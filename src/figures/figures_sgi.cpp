@@ -5,8 +5,8 @@
 #include "figures/figures_kit.h"
 
 #include "measure/ground_truth.h"
-#include "techniques/scene_pass.h"
-#include "techniques/slide_projector.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "techniques/light_passes/slide_projector.h"
 #include "scene/spotlight.h"
 
 #include <glm/gtc/matrix_transform.hpp>

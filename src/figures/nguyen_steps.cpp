@@ -3,7 +3,7 @@
 #include "figures/nguyen_steps.h"
 
 #include "measure/ground_truth.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide_shim.h>
 #include <glm/gtc/matrix_transform.hpp>

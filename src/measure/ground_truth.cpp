@@ -7,7 +7,7 @@
 #include "measure/ground_truth.h"
 
 #include "scene/lighting.h"
-#include "techniques/projection.h"
+#include "techniques/geometry/projection.h"
 #include "scene/slides.h"
 #include "scene/spotlight.h"
 

@@ -4,7 +4,7 @@
 #include "measure/speed_error.h"
 
 #include "measure/ground_truth.h"
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -1,6 +1,6 @@
 // A slide projector's slide as data (Segal et al. 1992, 3.1): the built-in patterns and slides
 // read from image files, as 565 texels and as colours. The passes that project them are in
-// techniques/slide_projector.h.
+// techniques/light_passes/slide_projector.h.
 #pragma once
 
 #include "scene/scene.h"

@@ -2,10 +2,10 @@
 // scene pass alone) and the projected shadow texture (projected_shadow.h) in its two variants.
 #include "techniques/technique.h"
 
-#include "techniques/depth_map_shadow.h"
-#include "techniques/planar_shadow.h"
-#include "techniques/scene_pass.h"
-#include "techniques/stencil_volume_shadow.h"
+#include "techniques/depth_map/depth_map_shadow.h"
+#include "techniques/planar/planar_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "techniques/stencil_volume/stencil_volume_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>

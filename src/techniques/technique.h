@@ -7,7 +7,7 @@
 // caster other than the receiver itself; black elsewhere.
 #pragma once
 
-#include "techniques/projected_shadow.h"
+#include "techniques/projected/projected_shadow.h"
 #include "scene/scene.h"
 
 #include <memory>

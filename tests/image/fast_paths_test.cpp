@@ -13,8 +13,8 @@
 #include "image_compare.h"
 #include "scene/fight_scene.h"
 #include "shim_workloads.h"
-#include "techniques/projected_shadow.h"
-#include "techniques/scene_pass.h"
+#include "techniques/projected/projected_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -1,8 +1,8 @@
 // The depth-map technique on small scenes whose answer is known: the box's footprint (as the
 // projected technique finds it), no acne on a lit plane, no light leak under a resting box, a
 // receiver between light and caster lit, nothing behind the light shadowed, both filters.
-#include "techniques/depth_map_shadow.h"
-#include "techniques/scene_pass.h"
+#include "techniques/depth_map/depth_map_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -5,7 +5,7 @@
 #include "scene/fight_scene.h"
 #include "measure/ground_truth.h"
 #include "scene/lighting.h"
-#include "techniques/projection.h"
+#include "techniques/geometry/projection.h"
 #include "technique_fixture.h"
 
 #include <gtest/gtest.h>

@@ -1,13 +1,13 @@
 // Issue 14's y1 and y2 (tests/hard_cases/audit): the projected techniques on a crate and a rail
 // whose shadows run towards the camera, the light moved; and wide_cone_hall, whose walls' shadow
-// edges lie under their feet. The texel-footprint measure (src/techniques/texel_footprint.*)
+// edges lie under their feet. The texel-footprint measure (src/techniques/texel_error/texel_footprint.*)
 // takes a texel's width across its stretch, which moves an edge running along the light's
 // direction; the shadows' far ends (the crate's top, the rail's bar) run across it, where a
 // texel's long side moves them, and a hidden edge excuses no strayed pixel. Both are caught by
 // the estimate of the error along each silhouette edge's shadow (src/techniques/
 // shadow_edge_error.*): before it, bilinear accepted y1 at 0.68% interior error, y2 at 0.57%
 // and wide_cone_hall at 0.157% (docs/hard_cases_results.md). The depth map measures its texels
-// the same way (src/techniques/depth_map_footprint.*, with its own lookups): before, it accepted
+// the same way (src/techniques/depth_map/depth_map_footprint.*, with its own lookups): before, it accepted
 // y1 at 0.339% interior error.
 #include "hard_case_checks.h"
 

@@ -6,7 +6,7 @@
 #include "hard_case_checks.h"
 
 #include "scene/fight_scene.h"
-#include "techniques/texel_footprint.h"
+#include "techniques/texel_error/texel_footprint.h"
 
 #include <gtest/gtest.h>
 

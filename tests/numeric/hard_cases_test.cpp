@@ -6,10 +6,10 @@
 
 #include "measure/ground_truth.h"
 #include "measure/metrics.h"
-#include "techniques/planar_shadow.h"
-#include "techniques/projected_shadow.h"
-#include "techniques/scene_pass.h"
-#include "techniques/stencil_volume_shadow.h"
+#include "techniques/planar/planar_shadow.h"
+#include "techniques/projected/projected_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "techniques/stencil_volume/stencil_volume_shadow.h"
 #include "techniques/technique.h"
 
 #include <glide.h>

@@ -8,7 +8,7 @@
 // light with the error.
 #include "hard_case_checks.h"
 
-#include "techniques/projected_shadow.h"
+#include "techniques/projected/projected_shadow.h"
 
 #include <gtest/gtest.h>
 

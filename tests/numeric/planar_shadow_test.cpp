@@ -3,8 +3,8 @@
 // receiver nearer the light, shadows on other objects, agreement with the projected texture, each
 // pixel darkened once however many polygons cover it, and the pair limit's warning.
 #include "scene/fight_scene.h"
-#include "techniques/planar_shadow.h"
-#include "techniques/scene_pass.h"
+#include "techniques/planar/planar_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
 #include "techniques/technique.h"
 
 #include <glide.h>

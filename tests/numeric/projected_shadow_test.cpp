@@ -3,7 +3,7 @@
 // the texture's clean border, and the LFB and direct paths giving the same texture.
 #include "context.h"
 #include "scene/fight_scene.h"
-#include "techniques/projected_shadow.h"
+#include "techniques/projected/projected_shadow.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -2,8 +2,8 @@
 // slide where z equals the stored depth; modulate by the surface colour. A white floor under a
 // checker slide from straight above: lit cells are albedo x min(1, ambient + slide), dark ones
 // albedo x ambient; outside the projector's view only ambient; behind the projector nothing.
-#include "techniques/scene_pass.h"
-#include "techniques/slide_projector.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "techniques/light_passes/slide_projector.h"
 
 #include <glide.h>
 #include <glide_shim.h>

@@ -3,8 +3,8 @@
 // value against albedo x (ambient + light x diffuse x beam x attenuation) at the floor point the
 // pixel sees; exact per-pixel attenuation against the per-vertex kind on a floor of two
 // triangles, where interpolating between corners is far from the function.
-#include "techniques/projection.h"
-#include "techniques/scene_pass.h"
+#include "techniques/geometry/projection.h"
+#include "techniques/light_passes/scene_pass.h"
 #include "scene/spotlight.h"
 
 #include <glide.h>

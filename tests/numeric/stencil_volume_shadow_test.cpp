@@ -2,8 +2,9 @@
 // shapes, a box's footprint on the floor (against the projected texture's), the camera inside a
 // shadow volume (z-fail right, z-pass wrong, the automatic choice z-fail), and an open caster.
 #include "scene/fight_scene.h"
-#include "techniques/scene_pass.h"
-#include "techniques/stencil_volume_shadow.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "techniques/geometry/edge_mesh.h"
+#include "techniques/stencil_volume/stencil_volume_shadow.h"
 #include "techniques/technique.h"
 
 #include <glide.h>

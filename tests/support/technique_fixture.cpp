@@ -1,7 +1,7 @@
 // The shared technique-test fixture.
 #include "technique_fixture.h"
 
-#include "techniques/scene_pass.h"
+#include "techniques/light_passes/scene_pass.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -2,7 +2,7 @@
 // of the map at which both the texel footprint and the frame's estimated edge error fit. Before,
 // a footprint refusal named the size the footprint alone would take, and rendering at that size
 // could be refused again along the shadow's edges.
-#include "techniques/shadow_edge_error.h"
+#include "techniques/texel_error/shadow_edge_error.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 // so gives the very same points (world space), bit for bit.
 #include "scene/mesh.h"
 #include "scene/scene.h"
-#include "techniques/light_beam.h"
-#include "techniques/projection.h"
+#include "techniques/geometry/light_beam.h"
+#include "techniques/geometry/projection.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>

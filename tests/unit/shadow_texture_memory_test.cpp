@@ -2,7 +2,7 @@
 // they fit; the rest are loaded as a pass binds them, round the memory over the textures loaded
 // longest before, and a texture whose memory was taken is loaded again when next bound. Byte
 // addresses of a small memory, as TMU0's 2 MB would give them at 128 KB a texture.
-#include "techniques/shadow_texture_memory.h"
+#include "techniques/projected/shadow_texture_memory.h"
 
 #include <gtest/gtest.h>
 

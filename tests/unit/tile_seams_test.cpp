@@ -5,8 +5,8 @@
 // every seam point one tile makes is made, bit for bit, by its neighbour, and the four pieces
 // cover the triangle's area in the light's view, the parts beyond the map kept (its clean border
 // lies there).
-#include "techniques/projected_shadow.h"
-#include "techniques/projection.h"
+#include "techniques/projected/projected_shadow.h"
+#include "techniques/geometry/projection.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,7 +1,7 @@
-// The depth map replay's triangle hierarchy (techniques/triangle_bvh.h) answers as a loop over
+// The depth map replay's triangle hierarchy (techniques/depth_map/triangle_bvh.h) answers as a loop over
 // every triangle in order does: the same nearest hit (parameter and triangle, the first of those
 // tied), and the same answer to whether a segment meets any. Space: world, metres.
-#include "techniques/triangle_bvh.h"
+#include "techniques/depth_map/triangle_bvh.h"
 
 #include <gtest/gtest.h>
 

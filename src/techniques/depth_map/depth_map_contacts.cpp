@@ -1,0 +1,234 @@
+// The depth map's error beside the lines where a caster meets a receiver (depth_map_contacts.h).
+// Spaces: world (meshes, planes; rays in double); the map's texture coordinates (s, t, r, q, GL:
+// s/q and t/q times the side are texels, r/q the stored depth 0..1); camera clip; screen pixels.
+#include "techniques/depth_map/depth_map_contacts.h"
+
+#include "techniques/depth_map/depth_map_lookup.h"
+#include "techniques/depth_map/depth_map_replay.h"
+#include "techniques/geometry/light_beam.h"
+#include "techniques/geometry/projection.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace gs::depth_map {
+namespace {
+
+// The segment where the triangle a, b, c (world) meets the plane through `origin` with unit
+// normal `normal`; false when it does not cross it (or lies in it).
+bool plane_cut(const dvec3 &a, const dvec3 &b, const dvec3 &c, const dvec3 &origin,
+               const dvec3 &normal, dvec3 &p, dvec3 &q) {
+  const dvec3 v[3] = {a, b, c};
+  const double size = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+  const double touching = 1e-5 * size;  // metres: on the plane within rounding
+  double h[3];
+  for (int k = 0; k < 3; ++k) h[k] = glm::dot(normal, v[k] - origin);
+  std::vector<dvec3> cut;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(h[k]) <= touching) cut.push_back(v[k]);
+    const int n = (k + 1) % 3;
+    if ((h[k] < -touching && h[n] > touching) || (h[k] > touching && h[n] < -touching)) {
+      cut.push_back(v[k] + (v[n] - v[k]) * (h[k] / (h[k] - h[n])));
+    }
+  }
+  if (cut.size() != 2) return false;
+  p = cut[0], q = cut[1];
+  return glm::length(q - p) > touching;
+}
+
+}  // namespace
+
+std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
+                                         const LightFrustum &frustum, const SpotLight &light,
+                                         int side, const TechniqueOptions &options) {
+  std::vector<ContactError> result(scene.objects.size());
+  // Every object for the rays: what hides a receiver point from the camera, and what else
+  // shadows it (another caster, or the receiver itself: its own shadow is left out of the count).
+  const std::vector<RayBody> bodies = ray_bodies(meshes);
+  const FootprintSpace space = camera_screen(scene);  // for the screen positions
+  const glm::dmat4 camera_clip(space.camera_clip);
+  const dvec3 camera(scene.camera.position), light_position(light.position);
+  const LightBeam beam = light_beam(light);
+  const glm::mat4 to_map = texture_from_clip() * frustum.projection * frustum.view;
+  const int largest_side = side << (EdgeErrorEstimate::kSizes - 1);
+  auto box_of = [](const std::vector<glm::vec3> &points, glm::vec3 &low, glm::vec3 &high) {
+    low = glm::vec3(INFINITY), high = glm::vec3(-INFINITY);
+    for (const glm::vec3 &p : points) low = glm::min(low, p), high = glm::max(high, p);
+  };
+
+  // A sample of a foot: the point, its receiver's plane and triangle, and its share of the
+  // foot's length on screen (pixels).
+  struct FootSample {
+    dvec3 point, along, normal;
+    dvec3 corner[3];
+    double screen_length = 0.0, excused = 0.0;
+  };
+  std::vector<FootSample> samples;
+  for (const WorldMesh &caster : meshes) {
+    if (!caster.object->casts_shadow) continue;
+    const std::size_t caster_index = static_cast<std::size_t>(caster.object - scene.objects.data());
+    const std::size_t caster_at = static_cast<std::size_t>(&caster - meshes.data());
+    glm::vec3 caster_low, caster_high;
+    box_of(caster.position, caster_low, caster_high);
+    float most = 0.0f;  // the largest estimate on one receiver so far
+    for (const WorldMesh &receiver : meshes) {
+      if (!receiver.object->receives_shadow || &receiver == &caster) continue;
+      const std::size_t receiver_at = static_cast<std::size_t>(&receiver - meshes.data());
+      samples.clear();
+      for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+        const glm::vec3 &a = receiver.position[t.x], &b = receiver.position[t.y], &c = receiver.position[t.z];
+        const glm::vec3 face = glm::cross(b - a, c - a);
+        if (!(glm::dot(face, light.position - a) > 0.0f) || !(glm::length(face) > 0.0f)) continue;
+        const glm::vec3 low = glm::min(a, glm::min(b, c)), high = glm::max(a, glm::max(b, c));
+        if (glm::any(glm::greaterThan(low, caster_high)) || glm::any(glm::lessThan(high, caster_low))) continue;
+        const dvec3 normal = glm::normalize(dvec3(face));
+        const dvec3 corner[3] = {dvec3(a), dvec3(b), dvec3(c)};
+        for (const glm::uvec3 &u : caster.object->mesh.triangles) {
+          const dvec3 ca(caster.position[u.x]), cb(caster.position[u.y]), cc(caster.position[u.z]);
+          dvec3 p, q;
+          if (!plane_cut(ca, cb, cc, corner[0], normal, p, q)) continue;
+          // The cut clipped to the receiver's triangle (inward side normals in its plane).
+          double from = 0.0, to = 1.0;
+          for (int k = 0; k < 3 && from < to; ++k) {
+            const dvec3 inward = glm::cross(normal, corner[(k + 1) % 3] - corner[k]);
+            const double at_p = glm::dot(inward, p - corner[k]), at_q = glm::dot(inward, q - corner[k]);
+            if (at_p < 0.0 && at_q < 0.0) from = 1.0, to = 0.0;
+            else if (at_p < 0.0) from = std::max(from, at_p / (at_p - at_q));
+            else if (at_q < 0.0) to = std::min(to, at_p / (at_p - at_q));
+          }
+          if (!(from < to)) continue;
+          const dvec3 start = p + (q - p) * from, end = p + (q - p) * to;
+          const glm::vec4 cs = space.camera_clip * glm::vec4(glm::vec3(start), 1.0f);
+          const glm::vec4 ce = space.camera_clip * glm::vec4(glm::vec3(end), 1.0f);
+          if (!(cs.w > 0.0f && ce.w > 0.0f)) continue;
+          const glm::vec2 screen = footprint_screen_pixels(space, glm::vec3(end)) -
+                                   footprint_screen_pixels(space, glm::vec3(start));
+          const double length = glm::length(glm::dvec2(screen));
+          if (!(length > 1e-3)) continue;
+          // A pixel next to the foot's edge on screen is excused (shadow_edge_error.cpp) where
+          // the caster's own pixels count: they make the edge a visible one. Where they do not,
+          // the receiver's pixels whose centres lie within half a pixel of the foot may be the
+          // caster's all the same (the rasterizer rounds its outline), so no less is excused.
+          const glm::dvec2 across = glm::abs(glm::dvec2(screen.y, -screen.x)) / length;
+          const double excused =
+              caster.object->receives_shadow ? std::max(across.x, across.y) + across.x + across.y : 0.5;
+          // About two samples a texel of the map at its largest size, at most 16.
+          glm::dvec2 ts, te;
+          double ds, de;
+          MapReplay probe(frustum, light, side, options);
+          const double texels = probe.in_map(start, ts, ds) && probe.in_map(end, te, de)
+                                    ? glm::length(te - ts) * (largest_side / side) : 1.0;
+          const int count = std::clamp(static_cast<int>(std::ceil(texels)), 1, 16);
+          for (int k = 0; k < count; ++k) {
+            FootSample sample;
+            sample.point = start + (end - start) * ((k + 0.5) / count);
+            sample.along = glm::normalize(end - start);
+            sample.normal = normal;
+            for (int m = 0; m < 3; ++m) sample.corner[m] = corner[m];
+            sample.screen_length = length / count;
+            sample.excused = excused;
+            samples.push_back(sample);
+          }
+        }
+      }
+      if (samples.empty()) continue;
+      const std::size_t receiver_index = static_cast<std::size_t>(receiver.object - scene.objects.data());
+      EdgeErrorEstimate estimate;
+      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
+        const int map_side = side << size;
+        MapReplay replay(frustum, light, map_side, options);
+        replay.add(caster, frustum);
+        if (receiver.object->casts_shadow) replay.add(receiver, frustum);
+        double pixels = 0.0;
+        for (const FootSample &sample : samples) {
+          // The receiver's lowered depth (r/q): its receiver-plane bias when it casts.
+          double lowered = 0.0;
+          if (receiver.object->casts_shadow) {
+            const std::vector<glm::vec3> corners = {glm::vec3(sample.corner[0]), glm::vec3(sample.corner[1]),
+                                                    glm::vec3(sample.corner[2])};
+            const glm::vec4 plain = to_map * glm::vec4(corners[0], 1.0f);
+            const glm::vec4 biased =
+                biased_map_coords(corners, to_map, map_side, options.depth_bias_receiver)[0];
+            if (plain.w != 0.0f) lowered = static_cast<double>((plain.z - biased.z) / plain.w);
+          }
+          const dvec3 across = glm::normalize(glm::cross(sample.normal, sample.along));
+          glm::dvec2 foot_texels;
+          double foot_depth;
+          if (!replay.in_map(sample.point, foot_texels, foot_depth)) continue;
+          const glm::dvec2 foot_screen(footprint_screen_pixels(space, glm::vec3(sample.point)));
+          for (const double way : {1.0, -1.0}) {
+            const dvec3 direction = across * way;
+            // Metres along `direction` per texel of this map, from a small step.
+            const double probe_metres = 1e-3 * std::max(glm::length(sample.point - light_position), 1e-6);
+            glm::dvec2 next_texels;
+            double next_depth;
+            if (!replay.in_map(sample.point + direction * probe_metres, next_texels, next_depth)) continue;
+            const double texels_per_metre = glm::length(next_texels - foot_texels) / probe_metres;
+            if (!(texels_per_metre > 0.0)) continue;
+            // Walked a quarter texel at a time for two texels, then half a texel to eight.
+            double farthest = 0.0;  // texels: where the last wrong point lies
+            bool wrong_seen = false, wrong_truth = false, ends_at_edge = false;
+            for (int step = 1; step <= 20; ++step) {
+              const double at = step <= 8 ? 0.25 * step : 2.0 + 0.5 * (step - 8);  // texels
+              const dvec3 point = sample.point + direction * (at / texels_per_metre);
+              bool inside = true;
+              for (int m = 0; m < 3; ++m) {
+                const dvec3 inward = glm::cross(sample.normal, sample.corner[(m + 1) % 3] - sample.corner[m]);
+                inside = inside && glm::dot(inward, point - sample.corner[m]) >= 0.0;
+              }
+              if (!inside) break;
+              const glm::dvec4 seen = camera_clip * glm::dvec4(point, 1.0);
+              if (!(seen.w > 0.0) || std::abs(seen.x) > seen.w || std::abs(seen.y) > seen.w) break;
+              // Counted where the camera sees it past the caster and the light shines on it.
+              bool visible = glm::dot(sample.normal, camera - point) > 0.0;
+              for (std::size_t m = 0; m < bodies.size() && visible; ++m) {
+                visible = !blocks(bodies[m], camera, point - camera);
+              }
+              // Where another caster or the receiver itself shadows it too, neither the truth
+              // nor the map turns on this caster alone.
+              bool alone = true;
+              for (std::size_t m = 0; m < bodies.size() && alone && visible; ++m) {
+                if (m == caster_at || !(bodies[m].casts || m == receiver_at)) continue;
+                alone = !blocks(bodies[m], light_position, point - light_position);
+              }
+              glm::dvec2 texels;
+              double depth;
+              bool wrong = false, truth = wrong_truth;
+              if (visible && alone && inside_planes(beam.inner, glm::vec3(point)) &&
+                  replay.in_map(point, texels, depth)) {
+                truth = blocks(bodies[caster_at], light_position, point - light_position);
+                wrong = truth != replay.shadowed(texels, depth - lowered);
+              }
+              if (wrong) {
+                farthest = at + (step <= 8 ? 0.125 : 0.25);
+                wrong_seen = true, wrong_truth = truth;
+              } else if (wrong_seen || at >= 1.0) {
+                // Past the run of wrong points beside the foot, or none began there. A run that
+                // ends at a true edge (the truth turns) is that edge's band there too.
+                ends_at_edge = wrong_seen && truth != wrong_truth;
+                break;
+              }
+            }
+            if (!wrong_seen) continue;
+            const dvec3 reach = sample.point + direction * (farthest / texels_per_metre);
+            const double extent =
+                glm::length(glm::dvec2(footprint_screen_pixels(space, glm::vec3(reach))) - foot_screen);
+            const double band = ends_at_edge ? 2.0 * sample.excused : sample.excused;
+            pixels += std::max(extent - band, 0.0) * sample.screen_length;
+          }
+        }
+        estimate.pixels[size] = static_cast<float>(pixels);
+      }
+      ContactError &error = result[caster_index];
+      if (estimate.pixels[0] > most) most = estimate.pixels[0], error.receiver = receiver_index;
+      error.pixels.add(estimate);
+    }
+  }
+  return result;
+}
+
+}  // namespace gs::depth_map

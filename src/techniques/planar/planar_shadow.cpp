@@ -1,0 +1,301 @@
+// The planar shadow technique's drawing: the scene pass, then step 1's shadow polygons
+// (planar_casting.cpp) drawn over their receivers with depth levels that darken each pixel once.
+// Spaces: world (the shadow polygons); Glide screen through the camera (pixels, y down,
+// oow = 1/w) in step 3.
+#include "techniques/planar/planar_shadow.h"
+#include "techniques/step_clock.h"
+
+#include "scene/lighting.h"
+#include "techniques/geometry/light_beam.h"
+#include "techniques/geometry/projection.h"
+#include "techniques/light_passes/scene_pass.h"
+
+#include <glide.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <tuple>
+
+namespace gs {
+namespace {
+
+// Step 3's depth levels, in W-buffer codes (4096 per octave of w, so n codes nearer is 1/w times
+// 2^(n/4096): the same on the Voodoo and in the shim). Every polygon is drawn twice, with depth
+// writes on and GR_CMP_LESS (strictly nearer passes):
+//   - the cover, kCoverCodes nearer than its receiver: it passes the receiver the scene pass left
+//     in the depth buffer and darkens the pixel;
+//   - the seal, kCoverSealCodes nearer again, at alpha 0 (the colour is left as it is): it writes a
+//     depth that every later cover on that pixel, lying on the same plane, fails by kCoverSealCodes.
+// A single level (the cover with depth writes on) is not enough: two polygons on one plane would
+// have to interpolate exactly the same depth at a pixel they share for the second to fail, and
+// the rounding of their different vertices makes either one the nearer as often as not.
+// The levels go in the vertices' oow rather than through grDepthBiasLevel, so the thousands of
+// alternating covers and seals stay one batch of triangles instead of two state changes each.
+// Each light's covers must pass the scene pass's depths and not the previous lights' seals, so
+// before a light's polygons, once an earlier light has left seals, the scene pass's depth buffer
+// is drawn again (render_scene_depth, depth only). Each light used to get a band of codes
+// above the previous one's seals instead: 24 codes more margin per light, which let the second
+// light's covers pass whatever lay within 0.44% of its distance in front of their receiver
+// (tests/hard_cases/audit/pl6: a crumpled sheet lying on the floor, in both lights' shadow on
+// the floor, drawn over along a line of 23 pixels where it comes within 2 cm of the floor,
+// 0.131% of the receiver pixels).
+// The cover's margin is 2 codes (w times 1.0003): a margin of 1 left speckled holes in shadows
+// near the camera (0.06 to 0.27% of the receiver pixels, interior, on
+// tests/hard_cases/terminator_*.json; 2 codes: under 0.03%). A larger margin lets covers on a
+// floor pass the feet of what stands on it, a pixel or two of the contact line (4 codes: 5
+// pixels on a fighter's foot).
+// Over a receiver the scene pass clipped through the camera it is 8 codes (w times 1.0014): the
+// scene pass drew that receiver as a fan of its clipped polygon, whose triangles stray from the
+// plane of the largest by up to 4 codes on a floor seen at a grazing angle from 0.3 m
+// (tests/hard_cases/eye_near_plane.json).
+// Over a receiver triangle that reaches past the screen (guard band or camera-clipped) the margin
+// also holds what its 1/w changes over kCoverPixels along x plus along y (Level below): the
+// shim's guDrawTriangleWithClip clips it to the window and snaps the vertices it makes there to
+// 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
+// by up to 1/32 px of its gradient (measured: 1.8 to 2.8 codes at the right edge of
+// tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%), and the cover, clipped
+// the same way, by as much again. Receivers inside the window get none of it: on a receiver seen
+// edge-on it would let covers pass what lies close in front of it (with it on every receiver,
+// the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
+// An occluder closer to the receiver than 0.03% (0.14%) of its distance, plus that 1/16 px of its
+// gradient near the screen's edges, may let a cover show through, unless it is a caster passing
+// through the receiver's plane: step 1 leaves out what that caster hides of the plane from the
+// camera (planar_casting.cpp, HiddenRegion).
+constexpr float kCoverCodes = 2.0f;
+constexpr float kClippedCoverCodes = 8.0f;
+constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
+// In pixels of the receiver's gradient, over receivers past the window only: the seal clears
+// later covers by kCoverPixels beyond both clips' strays.
+constexpr float kCoverPixels = 1.0f / 16.0f;
+constexpr float kSealPixels = 2.0f * kCoverPixels;
+
+// The depth (oow) a triangle's screen vertices give across the screen once snapped, which is what
+// the rasteriser interpolates: oow = a x + b y + c, in Glide screen pixels.
+struct DepthPlane {
+  double a = 0.0, b = 0.0, c = 0.0;
+  double at(float x, float y) const { return a * x + b * y + c; }
+};
+
+bool depth_plane(const GrVertex &p, const GrVertex &q, const GrVertex &r, DepthPlane &plane) {
+  const double px = snap_to_subpixel(p.x), py = snap_to_subpixel(p.y);
+  const double qx = snap_to_subpixel(q.x) - px, qy = snap_to_subpixel(q.y) - py;
+  const double rx = snap_to_subpixel(r.x) - px, ry = snap_to_subpixel(r.y) - py;
+  const double qw = static_cast<double>(q.oow) - p.oow, rw = static_cast<double>(r.oow) - p.oow;
+  const double det = qx * ry - rx * qy;
+  if (det == 0.0) return false;  // edge-on: the scene pass drew nothing of it either
+  plane.a = (qw * ry - rw * qy) / det;
+  plane.b = (rw * qx - qw * rx) / det;
+  plane.c = p.oow - plane.a * px - plane.b * py;
+  return true;
+}
+
+// Whether the shim clips a triangle with this vertex to the screen (guDrawTriangleWithClip):
+// the rasteriser's clip window is the whole screen, and the shim tests the snapped vertex.
+bool outside_window(const GrVertex &v, const Scene &scene) {
+  const float x = snap_to_subpixel(v.x), y = snap_to_subpixel(v.y);
+  return !(x >= 0.0f && x < static_cast<float>(scene.width) && y >= 0.0f &&
+           y < static_cast<float>(scene.height));
+}
+
+// A depth level over a receiver: 1/w raised by `codes` W-buffer codes (a share of the depth)
+// plus what the receiver's depth changes over `pixels` pixels of screen along x and along y
+// (an absolute amount, so 1/w stays affine in screen space).
+struct Level {
+  float codes = 0.0f, pixels = 0.0f;
+};
+
+// Draws `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) at `level` above
+// that plane, at alpha `alpha`. Clip w counts near-plane distances (projection.cpp), so the
+// receiver's 1/w reaches 1 at the camera's near plane, and the W-buffer holds nothing nearer: the
+// shim clamps each vertex's 1/w to 1. A vertex pushed past 1 would lower the depth the whole
+// polygon iterates, so that its interior near the near plane kept a fraction of the margin
+// (tests/hard_cases/audit/y3: well under a code, 9 px from the near plane's line on the floor).
+// So the polygon is cut along the line on which its raised 1/w is 1 (1/w is affine in screen
+// space): the part short of it keeps the whole margin, the part past it (receiver depths within
+// the level of the near plane) is drawn at 1.
+void draw_at_level(const std::vector<GrVertex> &polygon, const DepthPlane &plane, Level level,
+                   float alpha, std::vector<GrVertex> &short_part,
+                   std::vector<GrVertex> &past_part) {
+  const float scale = std::exp2(level.codes / 4096.0f);
+  const float offset =
+      static_cast<float>((std::abs(plane.a) + std::abs(plane.b)) * level.pixels);
+  auto raise = [&](double oow) { return static_cast<float>(oow) * scale + offset; };
+  short_part.clear();
+  past_part.clear();
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    GrVertex a = polygon[i];
+    const GrVertex &b = polygon[(i + 1) % n];
+    const float da = raise(a.oow), db = raise(b.oow);
+    a.a = alpha;
+    a.oow = std::min(da, 1.0f);
+    if (da <= 1.0f) short_part.push_back(a);
+    if (da >= 1.0f) past_part.push_back(a);
+    if ((da < 1.0f) != (db < 1.0f) && da != 1.0f && db != 1.0f) {
+      // From the same end whichever way the edge is walked, so neighbours sharing it agree.
+      const bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+      const GrVertex &p = forward ? polygon[i] : b, &q = forward ? b : polygon[i];
+      const double dp = forward ? da : db, dq = forward ? db : da;
+      const double t = (1.0 - dp) / (dq - dp);  // where the raised 1/w is 1
+      GrVertex cut = a;
+      cut.x = snap_to_subpixel(static_cast<float>(p.x + (q.x - p.x) * t));
+      cut.y = snap_to_subpixel(static_cast<float>(p.y + (q.y - p.y) * t));
+      cut.oow = std::min(raise(plane.at(cut.x, cut.y)), 1.0f);
+      short_part.push_back(cut);
+      past_part.push_back(cut);
+    }
+  }
+  if (short_part.size() >= 3) draw_fan(short_part);
+  if (past_part.size() >= 3) draw_fan(past_part);
+}
+
+// The state the covers and seals are drawn in: flat `color`, iterated alpha blended.
+void set_polygon_state(GrColor_t color) {
+  grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+  grDepthBufferFunction(GR_CMP_LESS);
+  grDepthMask(FXTRUE);
+  grCullMode(GR_CULL_POSITIVE);  // wound like their receivers, whose back faces were culled
+  grColorCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_CONSTANT,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  grConstantColorValue(color);
+  grAlphaCombine(GR_COMBINE_FUNCTION_LOCAL, GR_COMBINE_FACTOR_NONE, GR_COMBINE_LOCAL_ITERATED,
+                 GR_COMBINE_OTHER_NONE, FXFALSE);
+  grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
+                       GR_BLEND_ZERO);
+}
+
+// Every light's polygons, flat `color` at the lights' strengths (or opaque) over the back
+// buffer, whose depth buffer holds the scene pass's surfaces.
+void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
+                          const PlanarShadows &shadows, GrColor_t color, bool opaque) {
+  set_polygon_state(color);
+  std::vector<ClipVertex> polygon, receiver_polygon, scratch;
+  std::vector<GrVertex> screen, receiver_screen, short_part, past_part;
+  bool sealed = false;  // some light's seals are in the depth buffer
+  for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
+    const ShadowPolygons &light = shadows.lights[l];
+    const float alpha = opaque ? 255.0f : scene.lights[l].shadow_strength * 255.0f;
+    if (sealed && !light.polygons.empty()) {
+      render_scene_depth(scene, frame);
+      set_polygon_state(color);
+      sealed = false;
+    }
+    for (const ShadowPolygons::Polygon &p : light.polygons) {
+      polygon.clear();
+      for (std::uint32_t i = 0; i < p.count; ++i) {
+        polygon.push_back({{}, light.vertices[p.first + i], {}});
+      }
+      project_camera_polygon(frame, scene, polygon, scratch, screen);
+      if (screen.size() < 3) continue;
+      // The depth is taken from the receiver triangle's own snapped vertices as the scene pass
+      // drew them, so cover and receiver differ by kCoverCodes and not by the rounding of two
+      // sets of vertices (on a grazing surface that rounding is worth many codes). A triangle
+      // the scene pass clipped through the camera was drawn as a fan of its clipped polygon,
+      // all in one plane: its largest fan triangle gives that plane.
+      const ProjectedObject &receiver = frame.objects[p.receiver];
+      const glm::uvec3 &t = receiver.object->mesh.triangles[p.triangle];
+      DepthPlane plane;
+      bool has_plane = false;
+      const bool clipped =
+          (receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) != 0;
+      bool past_window = false;
+      if (!clipped) {
+        has_plane =
+            depth_plane(receiver.screen[t.x], receiver.screen[t.y], receiver.screen[t.z], plane);
+        for (unsigned index : {t.x, t.y, t.z}) {
+          past_window = past_window || outside_window(receiver.screen[index], scene);
+        }
+      } else {
+        receiver_polygon.clear();
+        for (unsigned index : {t.x, t.y, t.z}) {
+          receiver_polygon.push_back({{}, receiver.world[index], {}});
+        }
+        project_camera_polygon(frame, scene, receiver_polygon, scratch, receiver_screen);
+        float largest = 0.0f;
+        for (std::size_t i = 2; i < receiver_screen.size(); ++i) {
+          const GrVertex &a = receiver_screen[0], &b = receiver_screen[i - 1],
+                         &c = receiver_screen[i];
+          const float area = std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+          if (area > largest && depth_plane(a, b, c, plane)) largest = area, has_plane = true;
+        }
+        for (const GrVertex &v : receiver_screen) {
+          past_window = past_window || outside_window(v, scene);
+        }
+      }
+      if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
+      for (GrVertex &v : screen) {
+        v.x = snap_to_subpixel(v.x), v.y = snap_to_subpixel(v.y);
+        v.oow = static_cast<float>(plane.at(v.x, v.y));
+      }
+      // The gradient's share only where the shim clipped the receiver to the window.
+      const float strays = past_window ? 1.0f : 0.0f;
+      const Level cover = {clipped ? kClippedCoverCodes : kCoverCodes, strays * kCoverPixels};
+      const Level seal = {cover.codes + kCoverSealCodes, cover.pixels + strays * kSealPixels};
+      draw_at_level(screen, plane, cover, alpha, short_part, past_part);
+      draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
+      sealed = true;
+    }
+  }
+  set_scene_state();
+}
+
+using Clock = std::chrono::steady_clock;
+
+class PlanarShadow final : public ShadowTechnique {
+ public:
+  FrameReport render(const Scene &scene, bool synchronous) override {
+    FrameReport report;
+    const auto frame_start = Clock::now();
+    auto start = frame_start;
+    auto finish_step = [&](const char *name) {
+      if (synchronous) grSstIdle();
+      report.steps.emplace_back(name, elapsed_ms(start));
+      start = Clock::now();
+    };
+    grRenderBuffer(GR_BUFFER_BACKBUFFER);
+    shadows_ = project_and_clip_casters(scene);
+    finish_step("1 project and clip caster polygons");
+    frame_ = project_scene(scene);
+    render_scene(scene, frame_);
+    finish_step("2 render the scene");
+    draw_shadow_polygons(scene, frame_, shadows_, 0x00000000u, false);
+    finish_step("3 draw the shadow polygons");
+    report.total_ms = elapsed_ms(frame_start);
+    if (shadows_.pairs_skipped > 0) {
+      report.errors.push_back(
+          "planar: " + std::to_string(shadows_.pairs_skipped) +
+          " caster/receiver triangle pairs beyond the limit of " +
+          std::to_string(kMaxClippedPairs) +
+          " per frame were not clipped, so part of the shadows is missing (fewer caster "
+          "triangles, e.g. a simpler shadow_mesh, bring it under the limit)");
+      report.warnings.push_back(report.errors.back());
+    }
+    return report;
+  }
+
+  void render_mask(const Scene &scene) override {
+    // Step 3 left its seals in the depth buffer, which its covers would fail. The scene pass's
+    // depth is drawn again (colour writes off; the same vertices give the same depths), so the
+    // covers pass exactly where they darkened the frame.
+    render_scene_depth(scene, frame_);
+    grDepthMask(FXFALSE);
+    grBufferClear(0, 0, 0);  // colour only
+    draw_shadow_polygons(scene, frame_, shadows_, 0xFFFFFFFFu, true);  // white, opaque
+  }
+
+ private:
+  PlanarShadows shadows_;
+  FrameGeometry frame_;
+};
+
+}  // namespace
+
+std::unique_ptr<ShadowTechnique> make_planar_shadow(const TechniqueOptions &) {
+  return std::make_unique<PlanarShadow>();
+}
+
+}  // namespace gs

@@ -1,0 +1,172 @@
+// The light's rays beside a contact strip (contact_strip_rays.h): world space triangles, the
+// light's Glide screen (texels, y down) for where a ray goes, light clip w (metres along the
+// light's axis) for the mask's near limit.
+#include "techniques/projected/contact_strip_rays.h"
+
+#include "techniques/projected/contact_strips.h"
+#include "techniques/projected/projected_shadow.h"
+#include "techniques/geometry/projection.h"
+#include "techniques/light_passes/scene_pass.h"
+#include "scene/scene.h"
+
+#include <algorithm>
+
+namespace gs {
+namespace {
+
+// Moller-Trumbore, edges included: where the line origin + t * direction meets the triangle
+// a, a + e1, a + e2 (world); false when it is parallel to it or misses it.
+bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 &a,
+           const glm::vec3 &e1, const glm::vec3 &e2, float &t) {
+  const glm::vec3 q = glm::cross(direction, e2);
+  const float det = glm::dot(e1, q);
+  if (det == 0.0f) return false;
+  const glm::vec3 s = origin - a;
+  const float u = glm::dot(s, q) / det;
+  if (u < 0.0f || u > 1.0f) return false;
+  const glm::vec3 r = glm::cross(s, e1);
+  const float v = glm::dot(direction, r) / det;
+  if (v < 0.0f || u + v > 1.0f) return false;
+  t = glm::dot(e2, r) / det;
+  return true;
+}
+
+}  // namespace
+
+ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &caster, bool closed,
+                                   const ProjectedObject &receiver, const glm::vec3 &camera,
+                                   const glm::mat4 &camera_clip, const glm::vec2 &low,
+                                   const glm::vec2 &high)
+    : view_(view), closed_(closed), camera_(camera), camera_clip_(camera_clip),
+      light_clip_(view.projection * view.view), clip_to_world_(glm::inverse(light_clip_)) {
+  const Mesh &mesh = caster_mesh(caster);
+  std::vector<glm::vec3> world(mesh.positions.size());
+  std::vector<glm::vec4> camera_points(world.size());
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    world[i] = glm::vec3(caster.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    camera_points[i] = camera_clip_ * glm::vec4(world[i], 1.0f);
+  }
+  std::vector<glm::vec2> screen;
+  std::vector<float> w;
+  to_light_screen(world, screen, w);
+  faces_.reserve(mesh.triangles.size());
+  // Every caster triangle: any of them may hide a receiver point from the camera.
+  for (const glm::uvec3 &t : mesh.triangles) {
+    add(world, screen, w, camera_points, t, true, glm::vec2(-INFINITY), glm::vec2(INFINITY));
+  }
+  caster_faces_ = faces_.size();
+  to_light_screen(receiver.world, screen, w);
+  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    add(receiver.world, screen, w, {}, t, false, low, high);
+  }
+}
+
+void ContactStripRays::to_light_screen(const std::vector<glm::vec3> &world,
+                                       std::vector<glm::vec2> &screen, std::vector<float> &w) const {
+  screen.resize(world.size());
+  w.resize(world.size());
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    const glm::vec4 clip = light_clip_ * glm::vec4(world[i], 1.0f);
+    w[i] = clip.w;
+    if (clip.w > 0.0f) {
+      const GrVertex v = to_screen(clip, view_.size, view_.size);
+      screen[i] = glm::vec2(v.x, v.y);
+    }
+  }
+}
+
+bool ContactStripRays::add(const std::vector<glm::vec3> &world, const std::vector<glm::vec2> &screen,
+                           const std::vector<float> &w, const std::vector<glm::vec4> &camera,
+                           const glm::uvec3 &t, bool caster, const glm::vec2 &low,
+                           const glm::vec2 &high) {
+  Face f;
+  f.caster = caster;
+  if (w[t.x] > 0.0f && w[t.y] > 0.0f && w[t.z] > 0.0f) {
+    f.low = glm::min(screen[t.x], glm::min(screen[t.y], screen[t.z]));
+    f.high = glm::max(screen[t.x], glm::max(screen[t.y], screen[t.z]));
+  }
+  if (f.high.x < low.x || f.low.x > high.x || f.high.y < low.y || f.low.y > high.y) return false;
+  const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
+  const glm::vec3 normal = glm::cross(b - a, c - a);  // as wound: outward, faces culled behind
+  f.a = a, f.e1 = b - a, f.e2 = c - a;
+  f.light_facing = glm::dot(normal, view_.position - a) > 0.0f;
+  f.camera_facing = glm::dot(normal, camera_ - a) > 0.0f;
+  if (!caster && !f.light_facing) return false;  // the receiver's mask is its light-facing surface
+  if (caster && camera[t.x].w > 0.0f && camera[t.y].w > 0.0f && camera[t.z].w > 0.0f) {
+    f.camera_low = glm::vec2(INFINITY), f.camera_high = glm::vec2(-INFINITY);
+    for (unsigned i : {t.x, t.y, t.z}) {
+      const glm::vec2 ndc = glm::vec2(camera[i]) / camera[i].w;
+      f.camera_low = glm::min(f.camera_low, ndc), f.camera_high = glm::max(f.camera_high, ndc);
+    }
+  }
+  faces_.push_back(f);
+  return true;
+}
+
+void ContactStripRays::select(const glm::vec2 &low, const glm::vec2 &high) {
+  selected_.clear();
+  for (const Face &f : faces_) {
+    if (f.high.x >= low.x && f.low.x <= high.x && f.high.y >= low.y && f.low.y <= high.y) {
+      selected_.push_back(&f);
+    }
+  }
+}
+
+bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
+  const glm::vec4 p = camera_clip_ * glm::vec4(point, 1.0f);
+  const glm::vec2 ndc = glm::vec2(p) / p.w;
+  // A face's NDC bounds widened by a little more than float rounding; the test is exact.
+  const float slack = 1e-4f;
+  // t runs from the point (0) to the camera (1); a triangle the point lies on is not between.
+  return std::any_of(faces_.begin(), faces_.begin() + static_cast<std::ptrdiff_t>(caster_faces_), [&](const Face &f) {
+    float t = 0.0f;
+    return !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
+                                        ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack)) &&
+           meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < 1.0f;
+  });
+}
+
+bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
+  const float size = static_cast<float>(view_.size);
+  const glm::vec2 ndc(p.x / size * 2.0f - 1.0f, 1.0f - p.y / size * 2.0f);
+  const glm::vec4 far = clip_to_world_ * glm::vec4(ndc, 0.5f, 1.0f);
+  const glm::vec3 direction = glm::vec3(far) / far.w - view_.position;
+  const float w_at_light = (light_clip_ * glm::vec4(view_.position, 1.0f)).w;
+  const float w_per_t = (light_clip_ * glm::vec4(direction, 0.0f)).w;
+  float first_front = INFINITY;  // the caster's first surface step 1 draws
+  hits_.clear();
+  // A face's bounds widened by far more than the rounding of p's ray and of its corners' screen
+  // positions (texels); the test is exact.
+  const float slack = 1e-2f;
+  for (const Face *f : selected_) {
+    float t = 0.0f;
+    if (p.x < f->low.x - slack || p.x > f->high.x + slack || p.y < f->low.y - slack ||
+        p.y > f->high.y + slack) {
+      continue;
+    }
+    if (!meets(view_.position, direction, f->a, f->e1, f->e2, t) || !(t > 0.0f)) continue;
+    if (f->caster && (f->light_facing || !closed_)) first_front = std::min(first_front, t);
+    // Step 1's mask leaves out the receiver nearer the light than the caster's front.
+    if (f->caster || w_at_light + w_per_t * t >= view_.caster_front) hits_.push_back({t, f});
+  }
+  // An open caster's cut: a receiver point behind its surface by less than a strip's depth
+  // margin (light clip w) lies on the cut, in neither side's shadow (the sheet's base seen by
+  // the camera, meshes_12312).
+  const float on_cut = closed_ ? first_front
+                               : first_front + kContactStripDepthShare *
+                                                   (w_at_light / w_per_t + first_front);
+  for (const Hit &h : hits_) {
+    if (h.face->caster || !h.face->camera_facing || !(h.t > on_cut)) continue;
+    // Inside a closed caster when its next surface along the ray faces away from the light;
+    // outside when that one faces the light or there is none. An open one has no inside.
+    const Hit *next = nullptr;
+    for (const Hit &c : hits_) {
+      if (c.face->caster && c.t > h.t && (!next || c.t < next->t)) next = &c;
+    }
+    if (closed_ && next && !next->face->light_facing) continue;
+    if (!hidden_from_camera(view_.position + direction * h.t)) return true;
+  }
+  return false;
+}
+
+}  // namespace gs

@@ -1,0 +1,38 @@
+// The layers of a masked receiver that its own surface hides from the light (step 3's depth
+// bands -2 and -3, projected_shadow.h). A triangle its own drawn surface hides (in part) takes a
+// texture masked by another surface than the receiver's nearest; the texture masked by its
+// farthest light-facing surface is exact only for the farthest layer on the light's ray. With a
+// third layer (three stacked plates of one mesh, a pole through the middle one, or a triangle
+// only partly hidden by a nearer plate), a caster part between a middle layer and the farthest
+// would shadow the middle one, which the light reaches. The middle layer's triangles are those
+// no other hidden triangle hides: for them the texture masked by the hidden triangles' own
+// nearest surface is exact (at each of their texels that surface is the triangle itself).
+// Spaces: light clip (the texture's LightView::projection * view; w in metres along the light's
+// axis).
+#pragma once
+
+#include "techniques/projected/projected_shadow.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace gs {
+
+class CasterSurfacesFromLight;
+
+enum HiddenLayer : std::uint8_t {
+  kNotHidden = 0,    // no part of the receiver's drawn surface hides it: band -1
+  kHiddenOnce = 1,   // hidden by its surface, but by no other hidden triangle: band -3
+  kHiddenTwice = 2,  // hidden by a hidden triangle too: band -2
+};
+
+// Per triangle of `receiver`'s mesh (in its order), for the texture of `view`: the triangles
+// that face the light and reach beyond the caster's front inside the view's square (those
+// draw_mask_surface draws), classified as HiddenLayer; the rest kNotHidden. Empty when no
+// triangle is kHiddenTwice or none kHiddenOnce may be in the caster's shadow: then the texture
+// masked by the farthest surface serves every hidden triangle (band -2 alone), as it is exact
+// for a second layer. `surfaces`: the caster's, whose receiver surface step 3 shares.
+std::vector<std::uint8_t> hidden_layers(const ProjectedObject &receiver, const LightView &view,
+                                        CasterSurfacesFromLight &surfaces);
+
+}  // namespace gs

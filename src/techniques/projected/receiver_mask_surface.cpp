@@ -1,0 +1,306 @@
+// Step 1's depth of a receiver's light-facing surface, which the caster is tested against
+// (pierced_receivers.h, draw_mask_surface): the surface's triangles clipped to the light's view,
+// fins along its outline from the light, and the contact strips beside the caster's cut. Light
+// view and light clip space in, the light's size x size Glide screen (texels) out.
+#include "techniques/projected/pierced_receivers.h"
+
+#include "techniques/geometry/projection.h"
+#include "techniques/light_passes/scene_pass.h"
+
+#include <glide.h>
+#include <glideutl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace gs {
+namespace {
+
+// The receiver's outline from the light: the edges of its light-facing triangles that no other
+// light-facing triangle shares (by world position), as pairs of position ids, sorted, so that a
+// lookup is a search; and those triangles' corners in the light's screen (texels), to find what
+// lies beyond an edge.
+struct Outline {
+  struct Lit {
+    glm::vec3 corner[3];  // world
+    glm::vec2 screen[3];  // light screen, texels
+    bool in_front;        // every corner before the light (else it is taken to overlap all)
+    glm::vec2 low, high;  // box of `screen`; the whole plane unless in front and within kNear
+  };
+  // Light screen texels: within this of the view, float rounding in a separating-axis test
+  // is below 1e-3 texel.
+  static constexpr float kNear = 1e4f;
+  // Per vertex of the receiver, an id equal to another vertex's exactly where their world
+  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids; ids run
+  // from 0 up to id_count.
+  std::vector<std::uint32_t> position_id;
+  std::uint32_t id_count = 0;
+  // The outline's edges filed under their lower id: its higher ids at higher[start[id]] up to
+  // higher[start[id + 1]].
+  std::vector<std::uint32_t> start, higher;
+  std::vector<Lit> lit;
+  std::uint64_t key(unsigned p, unsigned q) const {
+    const std::uint64_t a = position_id[p], b = position_id[q];
+    return a < b ? a << 32 | b : b << 32 | a;
+  }
+  // Whether the edge between vertices p and q of the receiver lies on the outline.
+  bool contains(unsigned p, unsigned q) const {
+    const std::uint64_t edge = key(p, q);
+    const auto first = higher.begin() + start[edge >> 32], last = higher.begin() + start[(edge >> 32) + 1];
+    return std::find(first, last, static_cast<std::uint32_t>(edge)) != last;
+  }
+  // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
+  // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
+  bool nothing_beyond(const glm::vec3 &p, const glm::vec3 &q, const glm::vec2 (&fin)[4]) const {
+    auto separated = [](const glm::vec2 *a, int na, const glm::vec2 *b, int nb) {
+      for (int i = 0; i < na; ++i) {
+        const glm::vec2 side = a[(i + 1) % na] - a[i];
+        const glm::vec2 axis(side.y, -side.x);
+        float a_low = INFINITY, a_high = -INFINITY, b_low = INFINITY, b_high = -INFINITY;
+        for (int k = 0; k < na; ++k) a_low = std::min(a_low, glm::dot(axis, a[k])), a_high = std::max(a_high, glm::dot(axis, a[k]));
+        for (int k = 0; k < nb; ++k) b_low = std::min(b_low, glm::dot(axis, b[k])), b_high = std::max(b_high, glm::dot(axis, b[k]));
+        if (a_high <= b_low || b_high <= a_low) return true;
+      }
+      return false;
+    };
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const glm::vec2 &corner : fin) low = glm::min(low, corner), high = glm::max(high, corner);
+    for (const Lit &t : lit) {
+      // Boxes more than a texel apart: the fin (a rectangle, whose right angles put one of the
+      // two polygons' edge normals within 45 degrees of the direction between their nearest
+      // points) and the triangle are separated by more than 0.7 texel along that normal, which
+      // `separated` finds whatever the rounding; skipped before the tests below, as they would.
+      if (t.high.x + 1.0f < low.x || high.x + 1.0f < t.low.x || t.high.y + 1.0f < low.y ||
+          high.y + 1.0f < t.low.y) {
+        continue;
+      }
+      bool neighbour = false;
+      for (const glm::vec3 &corner : t.corner) neighbour = neighbour || corner == p || corner == q;
+      if (neighbour) continue;
+      if (!t.in_front) return false;
+      if (!separated(fin, 4, t.screen, 3) && !separated(t.screen, 3, fin, 4)) return false;
+    }
+    return true;
+  }
+};
+
+// Per position of `world` (world space), an id shared exactly by the positions that compare
+// equal to it as floats (0 and -0 alike, infinities too; a NaN joins none), counted up in order
+// of first appearance; `count` is the number of ids. Through a hash table of the positions' bits.
+std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world,
+                                              std::uint32_t &count) {
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * world.size()) ++bits;
+  constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
+  std::vector<std::uint32_t> slot(std::size_t{1} << bits, kEmpty);  // a vertex with the position
+  std::vector<std::uint32_t> id(world.size());
+  count = 0;
+  for (std::uint32_t i = 0; i < world.size(); ++i) {
+    const glm::vec3 p = world[i] + glm::vec3(0.0f);  // -0 as 0, so equal positions hash alike
+    std::uint32_t x, y, z;
+    std::memcpy(&x, &p.x, 4), std::memcpy(&y, &p.y, 4), std::memcpy(&z, &p.z, 4);
+    const std::uint64_t hash =
+        ((std::uint64_t{x} << 32 | y) * 0x9E3779B97F4A7C15u) ^ (std::uint64_t{z} * 0xC2B2AE3D27D4EB4Fu);
+    for (std::size_t s = hash >> (64 - bits);; s = (s + 1) & ((std::size_t{1} << bits) - 1)) {
+      if (slot[s] == kEmpty) {
+        slot[s] = i;
+        id[i] = count++;
+        break;
+      }
+      if (world[slot[s]] == world[i]) {
+        id[i] = id[slot[s]];
+        break;
+      }
+    }
+  }
+  return id;
+}
+
+Outline outline_of(const LightView &view, const ProjectedObject &receiver,
+                   const std::vector<glm::vec4> &clip) {
+  Outline outline;
+  outline.position_id = world_position_ids(receiver.world, outline.id_count);
+  std::vector<std::uint64_t> all;
+  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+    if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;
+    all.push_back(outline.key(t.x, t.y));
+    all.push_back(outline.key(t.y, t.z));
+    all.push_back(outline.key(t.z, t.x));
+    Outline::Lit lit{{a, b, c}, {}, true, glm::vec2(INFINITY), glm::vec2(-INFINITY)};
+    bool near = true;
+    int k = 0;
+    for (unsigned i : {t.x, t.y, t.z}) {
+      lit.in_front = lit.in_front && clip[i].w > 0.0f;
+      const GrVertex v = to_screen(clip[i], view.size, view.size);
+      lit.screen[k] = glm::vec2(v.x, v.y);
+      near = near && std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear;
+      lit.low = glm::min(lit.low, lit.screen[k]), lit.high = glm::max(lit.high, lit.screen[k]);
+      ++k;
+    }
+    if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
+    outline.lit.push_back(lit);
+  }
+  // The edges filed under their lower id (a counting sort), each id's few then sorted: an edge
+  // on the outline is one found once.
+  std::vector<std::uint32_t> start(outline.id_count + 1, 0), higher(all.size());
+  for (const std::uint64_t edge : all) ++start[(edge >> 32) + 1];
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) start[id + 1] += start[id];
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (const std::uint64_t edge : all) higher[next[edge >> 32]++] = static_cast<std::uint32_t>(edge);
+  outline.start.assign(outline.id_count + 1, 0);
+  for (std::uint32_t id = 0; id < outline.id_count; ++id) {
+    const auto first = higher.begin() + start[id], last = higher.begin() + start[id + 1];
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      auto j = i + 1;
+      while (j != last && *j == *i) ++j;
+      if (j == i + 1) outline.higher.push_back(*i);
+      i = j;
+    }
+    outline.start[id + 1] = static_cast<std::uint32_t>(outline.higher.size());
+  }
+  return outline;
+}
+
+// A strip kFinTexels wide (the light's screen, texels) outside the edge p..q of a triangle whose
+// third corner is r, and as far beyond both ends, at the edge's own depth (1/W of its ends): a
+// texel centre that bilinear filtering reads for a point of the receiver (less than a texel away
+// on each axis, so within sqrt 2, plus the shim's 1/16 snapping) lies in the triangle or in the
+// strip. Wound as p, q, r are, so the caster's cull mode keeps it.
+// A farthest-surface mask (`farthest`, depth test GREATER) keeps the greater W: its fin only
+// carries the edge's W over a nearer layer or the clear, never hides a farther one, so it is
+// drawn whatever lies beyond, and from kFinInwardTexels back over the edge, as the fin's corners
+// snap (1/16 texel) apart from the triangle's and a sliver's texel centre could fall between.
+// Else the far slope of a dune the light grazes (issue 14, sf1) read the crest beyond its
+// outline, or nothing, as no caster there: alpha 0 over many pixels.
+constexpr float kFinTexels = 1.5f;
+constexpr float kFinInwardTexels = 0.125f;  // the light's screen, texels
+void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Outline &outline,
+              const glm::vec3 &p_world, const glm::vec3 &q_world, bool farthest) {
+  const glm::vec2 a(p.x, p.y), b(q.x, q.y), third(r.x, r.y);
+  const float length = glm::length(b - a);
+  if (!(length > 0.0f)) return;
+  const glm::vec2 along = (b - a) / length;
+  glm::vec2 out(along.y, -along.x);
+  if (glm::dot(out, third - a) > 0.0f) out = -out;
+  const glm::vec2 inward = farthest ? -out * kFinInwardTexels : glm::vec2(0.0f);
+  const glm::vec2 corners[4] = {a - along * kFinTexels + inward, b + along * kFinTexels + inward,
+                                b + (along + out) * kFinTexels, a + (out - along) * kFinTexels};
+  // Another layer of the receiver beyond the edge (a rope over the mat) takes the caster between
+  // them as its shadow: no fin there (the texture holds one answer per texel), but in a
+  // farthest-surface mask, where that layer's W wins where it is farther.
+  if (!farthest && !outline.nothing_beyond(p_world, q_world, corners)) return;
+  std::vector<GrVertex> quad(4, p);
+  for (int k = 0; k < 4; ++k) {
+    quad[static_cast<std::size_t>(k)].x = corners[k].x;
+    quad[static_cast<std::size_t>(k)].y = corners[k].y;
+    quad[static_cast<std::size_t>(k)].oow = k == 1 || k == 2 ? q.oow : p.oow;
+  }
+  const auto cross2 = [](const glm::vec2 &u, const glm::vec2 &v) { return u.x * v.y - u.y * v.x; };
+  // Reversed when it turns the other way from p, q, r (r lies inward, the quad outward), so the
+  // caster's cull mode keeps it.
+  if ((cross2(b - a, third - a) > 0.0f) != (cross2(b - a, out) > 0.0f)) std::reverse(quad.begin(), quad.end());
+  draw_fan(quad);
+}
+
+}  // namespace
+
+float depth_oow(const LightView &view, float light_w) {
+  return 0.5f * std::max(view.caster_front, 1e-3f) / light_w;
+}
+
+void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, bool farthest,
+                       const std::vector<std::uint8_t> *triangles) {
+  grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+  grDepthMask(FXTRUE);
+  grDepthBufferFunction(farthest ? GR_CMP_GREATER : GR_CMP_LESS);
+  grColorMask(FXFALSE, FXFALSE);
+  // Light clip space: beyond the caster's front (w >= caster_front), and the view's square a
+  // little wider (so the edge of the texture is covered too). Step 3 never shades the part of a
+  // receiver nearer the light than the caster's front (receiver_coords.cpp), so that part needs
+  // no protecting from the caster behind it; left in, it would hide a caster part lying between
+  // it and a farther part of the same receiver (a post behind a ridge of its floor) from that
+  // farther part, which the caster does shadow.
+  const std::vector<glm::vec4> planes = {
+      {0.0f, 0.0f, 0.0f, 1.0f}, {-1.0f, 0.0f, 0.0f, 1.01f}, {1.0f, 0.0f, 0.0f, 1.01f},
+      {0.0f, -1.0f, 0.0f, 1.01f}, {0.0f, 1.0f, 0.0f, 1.01f}};
+  const float nearest_w = std::max(view.caster_front, 1e-3f * std::max(view.caster_front, 1e-3f));
+  const glm::mat4 light_clip = view.projection * view.view;
+  std::vector<glm::vec4> clip(receiver.world.size());
+  std::vector<unsigned> outside(receiver.world.size());
+  for (std::size_t i = 0; i < clip.size(); ++i) {
+    const glm::vec4 &p = clip[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
+    outside[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
+                 (p.w < nearest_w) << 4;
+  }
+  std::vector<ClipVertex> polygon, scratch;
+  std::vector<GrVertex> fan;
+  const Outline outline = outline_of(view, receiver, clip);
+  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
+    if ((outside[t.x] & outside[t.y] & outside[t.z]) != 0) continue;
+    const auto number = static_cast<std::size_t>(&t - receiver.object->mesh.triangles.data());
+    if (triangles && (*triangles)[number] == 0) continue;  // not in a SurfaceMask::triangles
+    const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+    if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;  // faces away
+    polygon.clear();
+    for (unsigned i : {t.x, t.y, t.z}) polygon.push_back({clip[i], receiver.world[i], {}});
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) {
+      // The near plane as w >= nearest_w: (0, 0, 0, 1) shifted by the constant.
+      for (ClipVertex &v : polygon) v.clip.w -= nearest_w;
+      clip_polygon(polygon, planes[0], scratch);
+      for (ClipVertex &v : polygon) v.clip.w += nearest_w;
+      for (std::size_t k = 1; k < planes.size() && polygon.size() >= 3; ++k) {
+        clip_polygon(polygon, planes[k], scratch);
+      }
+    }
+    if (polygon.size() < 3) continue;
+    fan.clear();
+    glm::vec2 low(INFINITY), high(-INFINITY);  // the light's screen (texels)
+    for (const ClipVertex &v : polygon) {
+      GrVertex screen = to_screen(v.clip, view.size, view.size);
+      screen.oow = depth_oow(view, v.clip.w);
+      fan.push_back(screen);
+      low = glm::min(low, glm::vec2(screen.x, screen.y)), high = glm::max(high, glm::vec2(screen.x, screen.y));
+    }
+    // Only where the caster draws does step 1 test depth, and a pixel both cover has its centre
+    // within 1/16 texel (the shim's snapping) of both boxes: a surface triangle farther than a
+    // texel from every covered cell writes no depth the caster is tested against (nor its fins
+    // farther than that and their width).
+    if (!view.covered_near(low, high, 1.0f + kFinTexels)) continue;
+    if (view.covered_near(low, high, 1.0f)) draw_fan(fan);
+    // Along the receiver's outline from the light, the texture beyond it holds the caster behind
+    // the receiver, which the receiver's own points next to the outline would read (the filter's
+    // reach): its fins keep the caster there out of the texture, as the receiver's surface does
+    // inside it (a box hovering over a ring's mat, issue 14). Only for a triangle wholly inside
+    // the view (the fan is then its three corners, in order).
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) continue;
+    const glm::vec3 *corner[3] = {&a, &b, &c};
+    const unsigned index[3] = {t.x, t.y, t.z};
+    for (int k = 0; k < 3; ++k) {
+      if (outline.contains(index[k], index[(k + 1) % 3])) {
+        draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
+                 fan[static_cast<std::size_t>((k + 2) % 3)], outline, *corner[k], *corner[(k + 1) % 3],
+                 farthest);
+      }
+    }
+  }
+  // Beside the caster's cut by this surface, on its hidden side, the caster is kept out as far
+  // as filtering reaches (contact_strips.h); drawn whatever their winding (step 1 sets its
+  // caster's cull mode again after this).
+  if (!view.contact_strips.empty()) grCullMode(GR_CULL_DISABLE);
+  for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const GrVertex &v : strip) low = glm::min(low, glm::vec2(v.x, v.y)), high = glm::max(high, glm::vec2(v.x, v.y));
+    if (view.covered_near(low, high, 1.0f)) draw_fan(std::vector<GrVertex>(strip.begin(), strip.end()));
+  }
+  grColorMask(FXTRUE, FXFALSE);
+  grDepthMask(FXFALSE);
+  grDepthBufferFunction(GR_CMP_LESS);  // the caster, nearer than the surface kept
+}
+
+}  // namespace gs
