@@ -9,7 +9,10 @@ close behind a wide caster, a long bar across a narrow cone, flags, a tilted pla
 oblique light, a light facing the camera, two lights. With --meshes, each scene holds OBJ meshes
 unlike the built-in shapes (tori, concave prisms, open bowls, crumpled sheets, some unwelded
 with zero-area triangles; scene_meshes.py), written beside the scenes. With --sunk, casters lie
-through dunes, the ring or a tilted plate under a light 1 to 20 degrees above it (scene_sunk.py). Run them through every technique against
+through dunes, the ring or a tilted plate under a light 1 to 20 degrees above it (scene_sunk.py).
+With --lights, one to three spotlights of every beam shape, cone and attenuation, sometimes with a
+slide projector, over the same receivers and casters (scene_lights.py). Run them through every
+technique against
 the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
@@ -26,6 +29,7 @@ import random
 import sys
 
 import scene_classes
+import scene_lights
 import scene_meshes
 import scene_sunk
 
@@ -122,15 +126,20 @@ def main():
     parser.add_argument("--sunk", action="store_true",
                         help="casters lying through a receiver that is not flat, under a low light "
                              "(scene_sunk.py)")
+    parser.add_argument("--lights", action="store_true",
+                        help="one to three spotlights of every beam shape, cone and attenuation, "
+                             "sometimes a slide projector (scene_lights.py)")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
     os.makedirs(args.out, exist_ok=True)
-    if args.classes + args.grazing + args.meshes + args.sunk > 1:
-        parser.error("--classes, --grazing, --meshes and --sunk are separate kinds of scene; give one")
+    if args.classes + args.grazing + args.meshes + args.sunk + args.lights > 1:
+        parser.error("--classes, --grazing, --meshes, --sunk and --lights are separate kinds of "
+                     "scene; give one")
     prefix = ("classes" if args.classes else "grazing" if args.grazing else
-              "meshes" if args.meshes else "sunk" if args.sunk else "random")
+              "meshes" if args.meshes else "sunk" if args.sunk else
+              "lights" if args.lights else "random")
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
         if args.classes:
@@ -139,6 +148,8 @@ def main():
             made = scene_meshes.scene(seed, args.out, random.Random(seed))
         elif args.sunk:
             made = scene_sunk.scene(seed, random.Random(seed))
+        elif args.lights:
+            made = scene_lights.scene(seed, random.Random(seed), receiver, caster, on_sphere)
         else:
             made = scene(seed, args.grazing)
         with open(path, "w") as f:

@@ -34,6 +34,12 @@ TEST(HardCases, ShadowStopsAtTheConeInsideCoarseTriangles) {
   expect_right_or_refused("two_rods_wide_cone.json");
 }
 TEST(HardCases, ShadowStopsAtTheGobosBars) { expect_right_or_refused("gobo_bars.json"); }
+// Floor triangles whose corners are all lit, each in another pane of the gobo: the bar between
+// them is not (before, 1.2% and 0.35% false shadow there from the planar and projected ones).
+TEST(HardCases, ShadowStopsAtTheGobosBarsInsideTrianglesAcrossThem) {
+  expect_right_or_refused("gobo_wide_coarse_floor.json");
+  expect_right_or_refused("gobo_oblique_ball_and_rod.json");
+}
 
 // casts_shadow and receives_shadow, as the truth and every technique honour them.
 TEST(HardCases, SceneFlagsAreHonouredByTruthAndTechniques) {

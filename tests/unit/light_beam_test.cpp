@@ -88,6 +88,24 @@ TEST(ClipToBeam, EqualsTestingEveryPlane) {
   }
 }
 
+// surely_holds_triangle: a triangle lies in one lit piece of the beam only when its three corners
+// share one. Light 5 m up looking down, 60 degrees: the beam plane's half side is 2.89 m at y = 0
+// and a gobo's bars are 0.29 m wide there, along x = 0 and z = 0 (world).
+TEST(LightBeamPieces, ATriangleIsSurelyInsideOnlyWithItsCornersInOnePiece) {
+  const gs::LightBeam round = gs::light_beam(light_looking_down(""));
+  const gs::LightBeam gobo = gs::light_beam(light_looking_down("gobo"));
+  const glm::vec3 a(0.5f, 0.0f, 0.5f), b(1.5f, 0.0f, 0.6f), c(0.7f, 0.0f, 1.4f);  // one pane
+  const glm::vec3 across(-1.0f, 0.0f, 0.8f);  // the pane beside it, over the bar x = 0
+  EXPECT_TRUE(round.surely_holds_triangle(a, b, c));
+  EXPECT_TRUE(round.surely_holds_triangle(a, b, across));
+  EXPECT_TRUE(gobo.surely_holds_triangle(a, b, c));
+  EXPECT_GE(gobo.region_holding(across), 0);
+  EXPECT_NE(gobo.region_holding(across), gobo.region_holding(a));
+  EXPECT_FALSE(gobo.surely_holds_triangle(a, b, across)) << "the bar between two panes is unlit";
+  EXPECT_EQ(gobo.region_holding({0.0f, 0.0f, 1.0f}), -1) << "a point on the bar";
+  EXPECT_EQ(round.region_holding({4.0f, 0.0f, 0.0f}), -1) << "a point beyond the cone";
+}
+
 TEST(ClipToBeam, AnEmptyMeshIsWhole) {
   bool whole = false;
   const gs::LightBeam beam = gs::light_beam(light_looking_down(""));

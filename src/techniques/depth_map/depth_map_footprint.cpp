@@ -245,7 +245,7 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
         if (polygon.size() < 3) break;
       }
       if (polygon.size() >= 3 &&
-          !(beam.surely_inside(a) && beam.surely_inside(b) && beam.surely_inside(c))) {
+          !beam.surely_holds_triangle(a, b, c)) {
         for (const glm::vec4 &plane : beam.outer) {
           clip_polygon(polygon, plane, scratch);
           if (polygon.size() < 3) break;

@@ -69,14 +69,23 @@ LightBeam light_beam(const SpotLight &light) {
   return beam;
 }
 
-bool LightBeam::surely_inside(const glm::vec3 &world) const {
-  const glm::vec3 to_point = world - position;
-  const float distance = glm::length(to_point);
-  if (inner_cosine >= -1.0f) return distance > 0.0f && glm::dot(axis, to_point) >= inner_cosine * distance;
-  for (const std::vector<glm::vec4> &region : regions) {
-    if (inside_planes(region, world)) return true;
+int LightBeam::region_holding(const glm::vec3 &world) const {
+  if (inner_cosine >= -1.0f) {
+    // The cone inscribed in `inner`, the only piece.
+    const glm::vec3 to_point = world - position;
+    const float distance = glm::length(to_point);
+    return distance > 0.0f && glm::dot(axis, to_point) >= inner_cosine * distance ? 0 : -1;
   }
-  return false;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    if (inside_planes(regions[r], world)) return static_cast<int>(r);
+  }
+  return -1;
+}
+
+bool LightBeam::surely_holds_triangle(const glm::vec3 &a, const glm::vec3 &b,
+                                      const glm::vec3 &c) const {
+  const int region = region_holding(a);
+  return region >= 0 && region_holding(b) == region && region_holding(c) == region;
 }
 
 bool inside_planes(const std::vector<glm::vec4> &planes, const glm::vec3 &world) {

@@ -32,7 +32,13 @@ struct LightBeam {
   // A point at least this cosine from the axis lies inside `inner` (the cone inscribed in the
   // inner pyramid); -2 for a square beam, where only the planes tell.
   float inner_cosine = -2.0f;
-  bool surely_inside(const glm::vec3 &world) const;  // quick test: true means inside `inner`
+  // The index in `regions` of the piece that surely holds `world` (the pieces are disjoint),
+  // or -1 when none surely does: a quick test, so -1 may still be inside.
+  int region_holding(const glm::vec3 &world) const;
+  // Whether the triangle a, b, c (world) lies wholly in one lit piece: its three corners in the
+  // same one (each piece is convex). Corners in different panes of a gobo say nothing of the
+  // bar between them.
+  bool surely_holds_triangle(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) const;
 };
 
 LightBeam light_beam(const SpotLight &light);

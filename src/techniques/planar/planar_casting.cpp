@@ -133,13 +133,13 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
                           const SpotLight &light, const glm::mat4 &light_view) {
   const SceneObject &object = scene.objects[index];
   const LitVertices lit = light_vertices(object.mesh, object.model_to_world, light_view);
-  // Per vertex: inside the inner beam for sure, and which outer planes it lies beyond (a
-  // triangle wholly beyond one of them is out of the light's reach).
-  std::vector<bool> inside(lit.world.size());
+  // Per vertex: the lit piece of the beam that surely holds it (-1: none), and which outer
+  // planes it lies beyond (a triangle wholly beyond one of them is out of the light's reach).
+  std::vector<int> region(lit.world.size());
   std::vector<std::uint64_t> beyond(lit.world.size(), 0);
   for (std::size_t i = 0; i < lit.world.size(); ++i) {
-    inside[i] = beam.surely_inside(lit.world[i]);
-    if (inside[i]) continue;
+    region[i] = beam.region_holding(lit.world[i]);
+    if (region[i] >= 0) continue;
     for (std::size_t p = 0; p < beam.outer.size() && p < 64; ++p) {
       if (glm::dot(beam.outer[p], glm::vec4(lit.world[i], 1.0f)) < 0.0f) beyond[i] |= 1ull << p;
     }
@@ -151,7 +151,9 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
     // The light does not shine on it anywhere: no shadow to cast on it.
     if ((beyond[t.x] & beyond[t.y] & beyond[t.z]) != 0) continue;
     ReceiverTriangle r;
-    r.beyond_beam = !(inside[t.x] && inside[t.y] && inside[t.z]);
+    // Wholly in one lit piece only when its corners share one (a gobo's panes: a triangle
+    // with corners in two of them crosses the bar between).
+    r.beyond_beam = !(region[t.x] >= 0 && region[t.x] == region[t.y] && region[t.x] == region[t.z]);
     r.index = static_cast<std::uint32_t>(k);
     r.corner = {lit.world[t.x], lit.world[t.y], lit.world[t.z]};
     const glm::vec3 cross = glm::cross(r.corner[1] - r.corner[0], r.corner[2] - r.corner[0]);

@@ -299,7 +299,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const glm::vec4 &p = lc[i];
       flags[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
                  (p.w < view.caster_front) << 4;
-      if (!beam_regions.empty() && !beam.surely_inside(receiver.world[i])) flags[i] |= 0x20;
+      // Bit 0x20: no lit piece of the beam surely holds it; else its piece from bit 8 up.
+      const int region = beam_regions.empty() ? 0 : beam.region_holding(receiver.world[i]);
+      flags[i] |= region < 0 ? 0x20u : static_cast<unsigned>(region) << 8;
       if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
     }
     const std::vector<glm::uvec3> &triangles = receiver.object->mesh.triangles;
@@ -346,7 +348,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       }
       const std::vector<glm::vec4> &planes = (any_outside & 0x40) != 0 ? band_planes : view_planes;
       const bool in_front = (any_outside & 0x50) != 0;
-      const bool beyond_beam = (any_outside & 0x20) != 0;
+      // Corners in different pieces (a gobo's panes) leave a bar between them.
+      const bool beyond_beam = (any_outside & 0x20) != 0 ||
+                               ((flags[t.x] ^ flags[t.y]) | (flags[t.x] ^ flags[t.z])) >> 8 != 0;
       const bool needs_clip =
           in_front || beyond_beam || (!view.tile_planes.empty() && (any_outside & 0xF) != 0);
       if (!needs_clip) {
