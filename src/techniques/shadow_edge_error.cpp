@@ -30,26 +30,6 @@ float edge_pixels_per_texel(const FootprintSpace &space, const glm::vec3 &p, con
                       (texel_area * along_screen), 1e6f);
 }
 
-// The direction in the texture (texels, x right, y down; unit) that the plane at world point p
-// (tangents t1, t2) takes to `screen_normal` (pixels, y up) on screen, or `fallback` where the
-// projections degenerate. A texture edge found along it lies straight across the true edge on
-// screen: measured along the texture's own normal instead, a texel's slant on a grazed plane
-// moves the point found along the edge, and the error of an edge that strays ever farther (the
-// wedge between a texel row and an edge crossing it at a shallow angle) is integrated over
-// the wrong length.
-glm::vec2 texture_direction_across(const FootprintSpace &space, const glm::vec3 &p, const glm::vec3 &t1,
-                                   const glm::vec3 &t2, const glm::vec2 &screen_normal,
-                                   const glm::vec2 &fallback) {
-  const glm::mat2 texels = tangent_jacobian(space.light_clip, p, glm::vec2(space.texels), t1, t2);
-  const glm::mat2 pixels = tangent_jacobian(space.camera_clip, p, space.pixels, t1, t2);
-  if (!(std::abs(glm::determinant(pixels)) > 1e-12f)) return fallback;
-  const glm::vec2 up = texels * (glm::inverse(pixels) * screen_normal);  // texels, y up
-  const glm::vec2 down(up.x, -up.y);
-  const float length = glm::length(down);
-  if (!(length > 1e-12f)) return fallback;
-  return down / length * (glm::dot(down, fallback) < 0.0f ? -1.0f : 1.0f);
-}
-
 // Narrows [from, to] (parameters along a segment) to where a linear function with values
 // `at_from_end` at 0 and `at_to_end` at 1 is at least 0.
 void keep_non_negative(float at_from_end, float at_to_end, float &from, float &to) {
@@ -70,13 +50,11 @@ glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
 }
 
 // Where the texture's edge lies near `on_edge` (texels), as a signed distance (texels) along
-// `direction` (unit, with a positive part along `away`) from the straight edge through it, whose
-// unit normal `away` points away from the covered side: step 1 covers the texel centres on the
-// edge's covered side, and the mask is shadow where the filtered alpha (`lookup`) is at least
-// half (the Voodoo's filter: more than half). Bisection along `direction`: two texels back
-// across the edge every centre that weighs is covered, two texels on none is.
-float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, const glm::vec2 &direction,
-                          EdgeLookup lookup) {
+// `away` (unit, pointing away from the covered side) from the straight edge through it: step 1
+// covers the texel centres on the edge's covered side, and the mask is shadow where the
+// filtered alpha (`lookup`) is at least half (the Voodoo's filter: more than half). Bisection
+// along `away`: two texels back every centre that weighs is covered, two texels on none is.
+float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeLookup lookup) {
   auto covered = [&](float x, float y) {
     return glm::dot(glm::vec2(x, y) - on_edge, away) < 0.0f ? 1.0f : 0.0f;
   };
@@ -99,12 +77,10 @@ float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, const
   // (sum + 0.5) / 256 down (shader_tmu.cpp): weights of exactly half give alpha 127, which the
   // mask's test against 128 rejects, so its edge needs more than half. The others: half.
   auto shadow = [&](float a) { return lookup == EdgeLookup::kVoodooBilinear ? a > 0.5f : a >= 0.5f; };
-  // Two texels across the edge, along `direction` (at most 16 texels along it).
-  const float reach = 2.0f / std::max(glm::dot(direction, away), 0.125f);
-  float inside = -reach, outside = reach;
-  for (int step = 0; step < 15; ++step) {
+  float inside = -2.0f, outside = 2.0f;
+  for (int step = 0; step < 12; ++step) {
     const float middle = 0.5f * (inside + outside);
-    (shadow(alpha(on_edge + middle * direction)) ? inside : outside) = middle;
+    (shadow(alpha(on_edge + middle * away)) ? inside : outside) = middle;
   }
   return 0.5f * (inside + outside);
 }
@@ -267,24 +243,22 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const glm::vec2 on_edge = texel_of(space, point);
       const glm::vec2 point_screen = footprint_screen_pixels(space, point);
       const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
-      const glm::vec2 across_texels =
-          texture_direction_across(space, point, t1, t2, screen_normal, away);
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
         if (banded && per_texel * kMostStrayTexels <= excused_pixels) break;
-        const float offset = texture_edge_offset(on_edge * scale, away, across_texels, lookup);
+        const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
         // Screen pixels from the true edge to the texture's, across the edge: where the strayed
         // point lands on the plane (the texels' stretch on either side of the edge), or the
         // Jacobian's estimate where it has no screen position.
         glm::vec2 strayed_screen;
         const float stray_pixels =
-            plane.screen_of(space, on_edge + offset / scale * across_texels, strayed_screen)
+            plane.screen_of(space, on_edge + offset / scale * away, strayed_screen)
                 ? std::min(std::abs(screen_normal.x * (strayed_screen.x - point_screen.x) +
                                     screen_normal.y * (strayed_screen.y - point_screen.y)),
                            1e6f)
-                : std::abs(offset * glm::dot(across_texels, away)) * per_texel;
+                : std::abs(offset) * per_texel;
         // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
         // caster); beside a hidden one, what leaves the caster.
         const float seen = !beyond || offset < 0.0f ? stray_pixels : 0.0f;

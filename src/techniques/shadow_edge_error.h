@@ -67,10 +67,10 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // its unit normal `normal` facing the light, already clipped to where the shadow's edge can
 // fall: texel_footprint). Along each shadow edge the texture's edge (where the filtered alpha
 // is half, read by `lookup`; the Voodoo's filter needs more than half) is found from the texel
-// centres the caster covers next to it, straight across the true edge as the screen sees it,
-// and its distance from the true edge measured on the screen where the light's projection puts
-// it on the plane (not through the projection's derivative at the true edge, which a grazed
-// plane's texels outgrow within a texel).
+// centres the caster covers next to it, and its distance from the true edge measured across
+// the edge on the screen, where the light's projection puts it on the plane (not through the
+// projection's derivative at the true edge, which a grazed plane's texels outgrow within a
+// texel).
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
 // from under the caster counts where the camera (world) sees past the caster's lit face. Seen
