@@ -52,8 +52,8 @@ glm::vec2 texel_of(const FootprintSpace &space, const glm::vec3 &world) {
 // Where the texture's edge lies near `on_edge` (texels), as a signed distance (texels) along
 // `away` (unit, pointing away from the covered side) from the straight edge through it: step 1
 // covers the texel centres on the edge's covered side, and the mask is shadow where the
-// filtered alpha (`lookup`) is at least half. Bisection along `away`: two texels back every
-// centre that weighs is covered, two texels on none is.
+// filtered alpha (`lookup`) is at least half (the Voodoo's filter: more than half). Bisection
+// along `away`: two texels back every centre that weighs is covered, two texels on none is.
 float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeLookup lookup) {
   auto covered = [&](float x, float y) {
     return glm::dot(glm::vec2(x, y) - on_edge, away) < 0.0f ? 1.0f : 0.0f;
@@ -73,13 +73,56 @@ float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeL
     return (1.0f - wy) * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 0.5f) + wx * covered(x0 + 1.5f, y0 + 0.5f)) +
            wy * ((1.0f - wx) * covered(x0 + 0.5f, y0 + 1.5f) + wx * covered(x0 + 1.5f, y0 + 1.5f));
   };
+  // The Voodoo's filter sums 255 times the covered texels' weights (16ths squared) and rounds
+  // (sum + 0.5) / 256 down (shader_tmu.cpp): weights of exactly half give alpha 127, which the
+  // mask's test against 128 rejects, so its edge needs more than half. The others: half.
+  auto shadow = [&](float a) { return lookup == EdgeLookup::kVoodooBilinear ? a > 0.5f : a >= 0.5f; };
   float inside = -2.0f, outside = 2.0f;
   for (int step = 0; step < 12; ++step) {
     const float middle = 0.5f * (inside + outside);
-    (alpha(on_edge + middle * away) >= 0.5f ? inside : outside) = middle;
+    (shadow(alpha(on_edge + middle * away)) ? inside : outside) = middle;
   }
   return 0.5f * (inside + outside);
 }
+
+// The receiver plane through `origin` (world) with unit tangents t1, t2, seen from the light: a
+// point of the light's texture (texels, x right, y down) back on the plane and on to the screen
+// (pixels, footprint_screen_pixels). The light's projection restricted to the plane is a
+// homography, inverted once per plane, so a texture edge strayed from the true one lands where
+// the texels' own stretch puts it: farther from the light a texel spans more of a grazed plane
+// than the Jacobian at the true edge says (issue 14: a wall's shadow thrown 7 m along a floor
+// from a light 1 m up, tests/hard_cases/audit/ne1).
+struct PlaneFromTexture {
+  glm::mat3 plane_from_ndc{1.0f};  // light NDC (x, y, 1) to plane (a, b, 1), up to scale
+  glm::vec3 origin{0.0f}, t1{0.0f}, t2{0.0f};
+  bool usable = false;
+
+  PlaneFromTexture(const FootprintSpace &space, const glm::vec3 &origin_, const glm::vec3 &t1_,
+                   const glm::vec3 &t2_)
+      : origin(origin_), t1(t1_), t2(t2_) {
+    auto xyw = [&](const glm::vec4 &v) {
+      const glm::vec4 c = space.light_clip * v;
+      return glm::vec3(c.x, c.y, c.w);
+    };
+    const glm::mat3 ndc_from_plane(xyw(glm::vec4(t1, 0.0f)), xyw(glm::vec4(t2, 0.0f)),
+                                   xyw(glm::vec4(origin, 1.0f)));
+    usable = std::abs(glm::determinant(ndc_from_plane)) > 1e-12f;
+    if (usable) plane_from_ndc = glm::inverse(ndc_from_plane);
+  }
+  // False where the texel's ray from the light misses the plane before it, or the point is
+  // behind the camera: no screen position.
+  bool screen_of(const FootprintSpace &space, const glm::vec2 &texel, glm::vec2 &screen) const {
+    if (!usable) return false;
+    const glm::vec2 ndc(texel.x / space.texels * 2.0f - 1.0f, 1.0f - texel.y / space.texels * 2.0f);
+    const glm::vec3 abw = plane_from_ndc * glm::vec3(ndc, 1.0f);
+    if (!(abw.z > 0.0f)) return false;  // the light's w there, inverted: the plane behind it
+    const glm::vec3 world = origin + (abw.x / abw.z) * t1 + (abw.y / abw.z) * t2;
+    const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
+    if (!(c.w > 0.0f)) return false;
+    screen = footprint_screen_pixels(space, world);
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -103,6 +146,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
   const float winding = glm::dot(area, normal) < 0.0f ? -1.0f : 1.0f;
   glm::vec3 t1, t2;
   plane_tangents(normal, t1, t2);
+  const PlaneFromTexture plane(space, origin, t1, t2);
   // A caster edge within this share of the light's height of the plane touches it.
   constexpr float kContactShare = 1e-3f;
   // The texture's edge strays less than this many texels from a straight edge.
@@ -167,7 +211,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     // max(|n.x|, |n.y|) from it across (n: the edge's unit normal on screen), and one within one
     // (Chebyshev) of a boundary pixel its band, up to |n.x| + |n.y| further: 2 pixels for an
     // edge along the screen's rows or columns, 2.12 at 45 degrees.
-    const glm::vec2 across = glm::abs(glm::vec2(screen_along.y, -screen_along.x)) / std::max(length, 1e-6f);
+    const glm::vec2 screen_normal = glm::vec2(screen_along.y, -screen_along.x) / std::max(length, 1e-6f);
+    const glm::vec2 across = glm::abs(screen_normal);
     const float excused_pixels = std::max(across.x, across.y) + across.x + across.y;
     const glm::vec2 along(glm::dot(end - start, t1), glm::dot(end - start, t2));
     if (!(length > 1e-3f) || !(glm::length(along) > 0.0f)) continue;
@@ -196,6 +241,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const float f = (static_cast<float>(k) + 0.5f) / static_cast<float>(samples);
       const glm::vec3 point = glm::mix(start, end, f);
       const glm::vec2 on_edge = texel_of(space, point);
+      const glm::vec2 point_screen = footprint_screen_pixels(space, point);
       const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
         // The texture 2^size times larger: the same view, its texels that much smaller.
@@ -203,11 +249,21 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         const float per_texel = pixels_per_texel / scale;
         if (banded && per_texel * kMostStrayTexels <= excused_pixels) break;
         const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
+        // Screen pixels from the true edge to the texture's, across the edge: where the strayed
+        // point lands on the plane (the texels' stretch on either side of the edge), or the
+        // Jacobian's estimate where it has no screen position.
+        glm::vec2 strayed_screen;
+        const float stray_pixels =
+            plane.screen_of(space, on_edge + offset / scale * away, strayed_screen)
+                ? std::min(std::abs(screen_normal.x * (strayed_screen.x - point_screen.x) +
+                                    screen_normal.y * (strayed_screen.y - point_screen.y)),
+                           1e6f)
+                : std::abs(offset) * per_texel;
         // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
         // caster); beside a hidden one, what leaves the caster.
-        const float seen = beyond ? std::max(-offset, 0.0f) : std::abs(offset);
-        const float stray = banded ? std::max(seen * per_texel - excused_pixels, 0.0f)
-                                   : std::max(offset, 0.0f) * per_texel;
+        const float seen = !beyond || offset < 0.0f ? stray_pixels : 0.0f;
+        const float stray = banded ? std::max(seen - excused_pixels, 0.0f)
+                                   : (offset > 0.0f ? stray_pixels : 0.0f);
         estimate.pixels[size] += sample_length * stray;
       }
     }
@@ -290,43 +346,6 @@ void mark_rims(const std::vector<std::pair<glm::vec3, glm::vec3>> &rims,
       return on_rim(rim, segment.a) && on_rim(rim, segment.b);
     });
   }
-}
-
-float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
-  const float width = static_cast<float>(scene.width), height = static_cast<float>(scene.height);
-  // The screen's sides as half-planes (x, y, 1) . side >= 0.
-  const glm::vec3 sides[4] = {{1, 0, 0}, {-1, 0, width}, {0, 1, 0}, {0, -1, height}};
-  std::vector<glm::vec2> polygon, clipped;
-  std::vector<ClipVertex> camera_polygon, scratch;
-  std::vector<GrVertex> screen;
-  float pixels = 0.0f;
-  for (const ProjectedObject &receiver : frame.objects) {
-    if (!receiver.object->receives_shadow) continue;
-    for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-      if (glm::dot(glm::cross(b - a, c - a), scene.camera.position - a) <= 0.0f) continue;
-      polygon.clear();
-      if ((receiver.outside[t.x] | receiver.outside[t.y] | receiver.outside[t.z]) == 0) {
-        for (unsigned i : {t.x, t.y, t.z}) polygon.emplace_back(receiver.screen[i].x, receiver.screen[i].y);
-      } else {  // through the camera's near plane and guard band first
-        camera_polygon = {{{}, a, {}}, {{}, b, {}}, {{}, c, {}}};
-        project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
-        for (const GrVertex &v : screen) polygon.emplace_back(v.x, v.y);
-      }
-      for (const glm::vec3 &side : sides) {  // Sutherland-Hodgman
-        clipped.clear();
-        for (std::size_t i = 0; i < polygon.size(); ++i) {
-          const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
-          const float dp = glm::dot(side, glm::vec3(p, 1.0f)), dq = glm::dot(side, glm::vec3(q, 1.0f));
-          if (dp >= 0.0f) clipped.push_back(p);
-          if ((dp >= 0.0f) != (dq >= 0.0f)) clipped.push_back(p + (q - p) * (dp / (dp - dq)));
-        }
-        polygon.swap(clipped);
-      }
-      pixels += polygon_area(polygon);
-    }
-  }
-  return std::min(pixels, width * height);
 }
 
 AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,

@@ -38,9 +38,12 @@ struct SilhouetteSegment {
 // (docs/hard_cases_results.md).
 inline constexpr float kEdgeErrorReceiverShare = 0.001f;
 
-// The screen pixels (Glide screen) of the receivers' triangles that face the camera, the parts
-// before it, clipped to the screen, at most the screen's: the budget's base. Receivers
-// overlapping on screen count twice.
+// The budget's base: the screen pixels (Glide screen) whose centre some object's camera-facing
+// triangle covers (the parts before the camera), each once. It is the error measure's base
+// (src/measure/speed_error.cpp: every visible surface's pixels, caster or receiver) but for the
+// pixels an object shadows on itself alone, which the measure leaves out. Summing the receivers'
+// areas instead counted the floor behind a wall twice and made the budget up to a fifth larger
+// than the measure's 0.1% (grazing_12217: 14,205 against 12,826 pixels, issue 14).
 float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame);
 
 // Estimated interior error (wrong pixels beyond an edge's band), for the texture as it is and at
@@ -63,8 +66,11 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // `light_position` (world) onto the convex planar receiver polygon `polygon` (world positions,
 // its unit normal `normal` facing the light, already clipped to where the shadow's edge can
 // fall: texel_footprint). Along each shadow edge the texture's edge (where the filtered alpha
-// is half, read by `lookup`) is found from the texel centres the caster
-// covers next to it, and its distance from the true edge taken to the screen across the edge.
+// is half, read by `lookup`; the Voodoo's filter needs more than half) is found from the texel
+// centres the caster covers next to it, and its distance from the true edge measured across
+// the edge on the screen, where the light's projection puts it on the plane (not through the
+// projection's derivative at the true edge, which a grazed plane's texels outgrow within a
+// texel).
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
 // from under the caster counts where the camera (world) sees past the caster's lit face. Seen

@@ -1,0 +1,84 @@
+// The budget of the error along a frame's shadow edges (shadow_edge_error.h): the screen
+// pixels the error measure counts, found by covering each pixel centre that some object's
+// camera-facing triangle holds (Glide screen, pixels).
+#include "techniques/texel_error/shadow_edge_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace gs {
+namespace {
+
+// Marks in `covered` (width x height, rows in Glide screen y) the pixels whose centre (x + 0.5,
+// y + 0.5) lies in the convex screen polygon `polygon` (pixels, already clipped to the screen).
+void cover_convex_polygon(const std::vector<glm::vec2> &polygon, int width, int height,
+                          std::vector<std::uint8_t> &covered) {
+  if (polygon.size() < 3) return;
+  float low = INFINITY, high = -INFINITY;
+  for (const glm::vec2 &p : polygon) low = std::min(low, p.y), high = std::max(high, p.y);
+  const int first_row = std::max(static_cast<int>(std::ceil(low - 0.5f)), 0);
+  const int last_row = std::min(static_cast<int>(std::ceil(high - 0.5f)), height);  // past the end
+  for (int y = first_row; y < last_row; ++y) {
+    const float centre = static_cast<float>(y) + 0.5f;
+    float left = INFINITY, right = -INFINITY;  // where the row's centre line crosses the sides
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+      if ((p.y <= centre) == (q.y <= centre)) continue;
+      const float x = p.x + (centre - p.y) * (q.x - p.x) / (q.y - p.y);
+      left = std::min(left, x), right = std::max(right, x);
+    }
+    if (!(left < right)) continue;
+    const int from = std::max(static_cast<int>(std::ceil(left - 0.5f)), 0);
+    const int to = std::min(static_cast<int>(std::ceil(right - 0.5f)), width);  // past the end
+    if (from >= to) continue;
+    std::uint8_t *row = covered.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    std::fill(row + from, row + to, std::uint8_t{1});
+  }
+}
+
+}  // namespace
+
+float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
+  const int width = scene.width, height = scene.height;
+  const float right = static_cast<float>(width), top = static_cast<float>(height);
+  // The screen's sides as half-planes (x, y, 1) . side >= 0 (Glide screen, pixels).
+  const glm::vec3 sides[4] = {{1, 0, 0}, {-1, 0, right}, {0, 1, 0}, {0, -1, top}};
+  // Per pixel: some camera-facing triangle covers its centre. A pixel two objects cover (the
+  // floor behind a wall) counts once, as the error measure counts the surface seen there.
+  std::vector<std::uint8_t> covered(static_cast<std::size_t>(std::max(width, 0)) *
+                                        static_cast<std::size_t>(std::max(height, 0)),
+                                    0);
+  std::vector<glm::vec2> polygon, clipped;
+  std::vector<ClipVertex> camera_polygon, scratch;
+  std::vector<GrVertex> screen;
+  for (const ProjectedObject &object : frame.objects) {
+    for (const glm::uvec3 &t : object.object->mesh.triangles) {
+      const glm::vec3 &a = object.world[t.x], &b = object.world[t.y], &c = object.world[t.z];
+      if (glm::dot(glm::cross(b - a, c - a), scene.camera.position - a) <= 0.0f) continue;
+      polygon.clear();
+      if ((object.outside[t.x] | object.outside[t.y] | object.outside[t.z]) == 0) {
+        for (unsigned i : {t.x, t.y, t.z}) polygon.emplace_back(object.screen[i].x, object.screen[i].y);
+      } else {  // through the camera's near plane and guard band first
+        camera_polygon = {{{}, a, {}}, {{}, b, {}}, {{}, c, {}}};
+        project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
+        for (const GrVertex &v : screen) polygon.emplace_back(v.x, v.y);
+      }
+      for (const glm::vec3 &side : sides) {  // Sutherland-Hodgman
+        clipped.clear();
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+          const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+          const float dp = glm::dot(side, glm::vec3(p, 1.0f)), dq = glm::dot(side, glm::vec3(q, 1.0f));
+          if (dp >= 0.0f) clipped.push_back(p);
+          if ((dp >= 0.0f) != (dq >= 0.0f)) clipped.push_back(p + (q - p) * (dp / (dp - dq)));
+        }
+        polygon.swap(clipped);
+      }
+      cover_convex_polygon(polygon, width, height, covered);
+    }
+  }
+  return static_cast<float>(std::count(covered.begin(), covered.end(), std::uint8_t{1}));
+}
+
+}  // namespace gs
