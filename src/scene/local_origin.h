@@ -1,15 +1,19 @@
-// A scene's local origin: a world point near its camera, on a 64 m grid, that the passes which
-// need millimetres (the depth map's light passes, the truth's Embree rays) subtract from every
-// world position before anything is rounded to float. A float holds about 7 digits: a world
-// position 3.6 km from the origin is rounded to 0.24 mm, and the light view's translation,
-// applied in float, loses as much again, which is hundreds of a 24-bit map's depth units (issue
-// 14: 0.2 to 0.6% interior false shadow). Relative to the local origin a scene keeps the
-// precision it has near the world's origin wherever it stands.
+// A scene's local origin: a world point near the scene, on a grid as fine as the scene is
+// large, that the passes which need the scene's own precision (the depth map's passes, the
+// truth's Embree rays) subtract from every world position before anything is rounded to float.
+// A float holds about 7 digits: 3.6 km from the origin a world position is rounded to 0.24 mm,
+// and the light view's translation, applied in float, loses as much again, hundreds of a 24-bit
+// map's depth units (issue 14: 0.2 to 0.6% interior false shadow from the depth map). Relative
+// to its local origin a scene keeps the precision it has at the world's origin wherever it
+// stands, as renderers draw relative to a local origin (camera-relative rendering).
 //
-// The grid keeps the move exact: a multiple of 64 subtracted from a float coordinate under 2^29
-// m is a multiple of that coordinate's spacing, so the moved scene is the same float geometry,
-// not a rounding of it; and a scene whose camera stands within 32 m of the world's origin has
-// its local origin there, so it is not moved at all (its frames stay byte-identical).
+// The grid: the power of two at least twice the widest side of the box around every object's
+// world vertices and the camera, so the local coordinates stay within a few times the scene's
+// size, and the move changes nothing a scale of the scene would not (the grid scales with it).
+// A multiple of it subtracted from a float coordinate is a multiple of that coordinate's spacing,
+// so the moved scene is the same float geometry, not a rounding of it. A scene whose box holds
+// the world's origin has its local origin there (the box's centre is within a quarter of the
+// grid), so it is not moved at all and its frames stay byte-identical.
 // Spaces: world (the scene's) and local (world minus the local origin, same axes and metres).
 #pragma once
 
@@ -19,10 +23,8 @@
 
 namespace gs {
 
-// The spacing of the local origins' grid, metres (a power of two).
-constexpr float kLocalOriginGrid = 64.0f;
-
-// World position of `scene`'s local origin: its camera's position rounded to the 64 m grid.
+// World position of `scene`'s local origin: its box's centre rounded to the grid above; the
+// world's origin when the box is empty, a point, or not finite.
 glm::vec3 local_origin(const Scene &scene);
 
 // `scene` itself when its local origin is the world's origin; otherwise `storage`, filled with
