@@ -10,8 +10,9 @@
 // The grid: the power of two at least twice the widest side of the box around every object's
 // world vertices and the camera, so the local coordinates stay within a few times the scene's
 // size, and the move changes nothing a scale of the scene would not (the grid scales with it).
-// A multiple of it subtracted from a float coordinate is a multiple of that coordinate's spacing,
-// so the moved scene is the same float geometry, not a rounding of it. A scene whose box holds
+// A multiple of it subtracted from a float coordinate at least as far out is exact (a multiple of
+// that coordinate's spacing, no larger), so the moved scene's translations, lights and camera
+// are the scene's own floats moved, not a rounding of them. A scene whose box holds
 // the world's origin has its local origin there (the box's centre is within a quarter of the
 // grid), so it is not moved at all and its frames stay byte-identical.
 // Spaces: world (the scene's) and local (world minus the local origin, same axes and metres).
