@@ -132,7 +132,7 @@ std::vector<Body> make_bodies(const Scene &scene, double &radius) {
 // Adds the bodies with triangles to `handles.scene`; geometry IDs are the indices in `bodies`
 // whose triangles are not empty (`by_geometry` maps them back). Embree holds floats, so its
 // vertices are in local coordinates (world minus `origin`, the scene's local origin, taken in
-// double): 3.6 km from the world's origin a float vertex would be 0.24 mm off, a quarter of
+// double): 3.6 km from the world's origin floats are 0.24 mm apart, a quarter of
 // the shadow rays' offset off the surface in a 10 m scene (local_origin.h).
 bool attach_bodies(EmbreeHandles &handles, std::vector<Body> &bodies, const glm::dvec3 &origin,
                    std::vector<const Body *> &by_geometry, std::string &error) {
