@@ -7,6 +7,7 @@
 #include "measure/ground_truth.h"
 
 #include "scene/lighting.h"
+#include "scene/local_origin.h"
 #include "techniques/geometry/projection.h"
 #include "scene/slides.h"
 #include "scene/spotlight.h"
@@ -129,8 +130,11 @@ std::vector<Body> make_bodies(const Scene &scene, double &radius) {
 }
 
 // Adds the bodies with triangles to `handles.scene`; geometry IDs are the indices in `bodies`
-// whose triangles are not empty (`by_geometry` maps them back).
-bool attach_bodies(EmbreeHandles &handles, std::vector<Body> &bodies,
+// whose triangles are not empty (`by_geometry` maps them back). Embree holds floats, so its
+// vertices are in local coordinates (world minus `origin`, the scene's local origin, taken in
+// double): 3.6 km from the world's origin floats are 0.24 mm apart, a quarter of
+// the shadow rays' offset off the surface in a 10 m scene (local_origin.h).
+bool attach_bodies(EmbreeHandles &handles, std::vector<Body> &bodies, const glm::dvec3 &origin,
                    std::vector<const Body *> &by_geometry, std::string &error) {
   for (Body &body : bodies) {
     if (body.triangle.empty()) continue;
@@ -153,7 +157,8 @@ bool attach_bodies(EmbreeHandles &handles, std::vector<Body> &bodies,
     }
     for (std::size_t i = 0; i < body.position.size(); ++i) {
       // Non-finite vertices are only referenced by dropped triangles; keep Embree's bounds sane.
-      const glm::vec3 p = finite(body.position[i]) ? glm::vec3(body.position[i]) : glm::vec3(0.0f);
+      const glm::vec3 p =
+          finite(body.position[i]) ? glm::vec3(body.position[i] - origin) : glm::vec3(0.0f);
       vertices[3 * i] = p.x, vertices[3 * i + 1] = p.y, vertices[3 * i + 2] = p.z;
     }
     for (std::size_t i = 0; i < body.triangle.size(); ++i) {
@@ -170,11 +175,15 @@ bool attach_bodies(EmbreeHandles &handles, std::vector<Body> &bodies,
   return true;
 }
 
-RTCRay make_ray(const glm::dvec3 &origin, const glm::dvec3 &dir, double tfar) {
+// A ray from `start` (world) along `dir`, its start moved to Embree's local coordinates (minus
+// `origin`, the vertices' local origin) in double before it is rounded to float.
+RTCRay make_ray(const glm::dvec3 &start, const glm::dvec3 &origin, const glm::dvec3 &dir,
+                double tfar) {
   RTCRay ray;
-  ray.org_x = static_cast<float>(origin.x);
-  ray.org_y = static_cast<float>(origin.y);
-  ray.org_z = static_cast<float>(origin.z);
+  const glm::vec3 local(start - origin);
+  ray.org_x = local.x;
+  ray.org_y = local.y;
+  ray.org_z = local.z;
   ray.dir_x = static_cast<float>(dir.x);
   ray.dir_y = static_cast<float>(dir.y);
   ray.dir_z = static_cast<float>(dir.z);
@@ -194,6 +203,7 @@ struct Caster {
   const std::vector<const Body *> &by_geometry;
   glm::dmat4 screen_to_world;  // inverse of camera projection * view, NDC to world
   double offset;               // world, shadow-ray start off the surface
+  glm::dvec3 origin;           // world, the local origin of Embree's vertices and rays
   std::vector<ProjectedImage> slides;  // per light: its slide, empty unless a projector
 };
 
@@ -225,7 +235,7 @@ LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3
   rtcInitIntersectContext(&others.base);
   others.base.filter = skip_geometry;
   others.skip = own;
-  RTCRay ray = make_ray(origin, to_light / distance, tfar);
+  RTCRay ray = make_ray(origin, c.origin, to_light / distance, tfar);
   rtcOccluded1(c.rtc, &others.base, &ray);
   if (ray.tfar < 0.0f) {
     by_other = true;
@@ -235,7 +245,7 @@ LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3
   rtcInitIntersectContext(&any.base);
   any.base.filter = skip_geometry;
   any.skip = RTC_INVALID_GEOMETRY_ID;
-  ray = make_ray(origin, to_light / distance, tfar);
+  ray = make_ray(origin, c.origin, to_light / distance, tfar);
   rtcOccluded1(c.rtc, &any.base, &ray);
   return ray.tfar < 0.0f ? LightReach::Blocked : LightReach::Lit;
 }
@@ -262,7 +272,7 @@ void cast_pixel(const Caster &c, int i, int j, GroundTruth &truth) {
   rtcInitIntersectContext(&front);
   front.filter = front_faces_only;
   RTCRayHit hit;
-  hit.ray = make_ray(origin, dir, length);
+  hit.ray = make_ray(origin, c.origin, dir, length);
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(c.rtc, &front, &hit);
@@ -356,7 +366,8 @@ bool compute_ground_truth(const Scene &scene, GroundTruth &truth, std::string &e
   rtcSetSceneFlags(handles.scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(handles.scene, RTC_BUILD_QUALITY_HIGH);
   std::vector<const Body *> by_geometry;
-  if (!attach_bodies(handles, bodies, by_geometry, error)) return false;
+  const glm::dvec3 origin(local_origin(scene));
+  if (!attach_bodies(handles, bodies, origin, by_geometry, error)) return false;
   rtcCommitScene(handles.scene);
   if (rtcGetDeviceError(handles.device) != RTC_ERROR_NONE) {
     error = "ground truth: Embree could not build the scene";
@@ -373,7 +384,8 @@ bool compute_ground_truth(const Scene &scene, GroundTruth &truth, std::string &e
   out.self_shadow.assign(pixels, 0);
   out.rgb.assign(pixels * 3, 0);
 
-  Caster caster{scene, handles.scene, by_geometry, screen_to_world, kOffsetScale * radius, {}};
+  Caster caster{scene, handles.scene, by_geometry, screen_to_world, kOffsetScale * radius,
+                origin, {}};
   for (const SpotLight &light : scene.lights)
     caster.slides.push_back(light.is_projector() ? slide_image(light) : ProjectedImage{});
   // Threads take rows from a counter; every pixel depends only on its own ray, so the bytes are

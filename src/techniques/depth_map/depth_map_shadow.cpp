@@ -1,8 +1,9 @@
 // Depth-map shadows, steps 2 and 3 and the mask: the camera's passes over the maps that
-// depth_map_from_light.cpp made, and the technique itself. Spaces: world (every vertex array holds
-// world positions, so all camera passes send identical vertices and meet the ambient pass's depth
-// exactly); light clip (GL convention) and light texture (s, t, r in 0..1 after the divide by
-// q = light-view depth) in the texgen planes; camera eye and clip.
+// depth_map_from_light.cpp made, and the technique itself. Spaces: world, of the scene moved to
+// its local origin (local_origin.h) so that no pass loses precision far from the world's origin
+// (every vertex array holds those positions, so all camera passes send identical vertices and
+// meet the ambient pass's depth exactly); light clip (GL convention) and light texture (s, t, r
+// in 0..1 after the divide by q = light-view depth) in the texgen planes; camera eye and clip.
 #include "techniques/depth_map/depth_map_shadow.h"
 #include "techniques/step_clock.h"
 
@@ -13,6 +14,7 @@
 #include "techniques/plain_gl/gl_beam_mask.h"
 #include "techniques/plain_gl/gl_light_units.h"
 #include "scene/lighting.h"
+#include "scene/local_origin.h"
 #include "techniques/geometry/projection.h"
 #include "scene/spotlight.h"
 
@@ -313,7 +315,10 @@ class DepthMapShadow final : public ShadowTechnique {
       return report;
     }
     {
-      depth_map::Passes passes(gl, scene, options_);
+      // Every pass in local coordinates (local_origin.h): the map's depths and the lookup's r
+      // are then as precise wherever the scene stands.
+      Scene moved;
+      depth_map::Passes passes(gl, in_local_coordinates(scene, moved), options_);
       auto step = [&](const char *name, auto &&pass) {
         const auto start = Clock::now();
         pass();
@@ -338,7 +343,8 @@ class DepthMapShadow final : public ShadowTechnique {
     if (!begin(gl, ignored)) return;
     {
       // The maps are made again rather than kept from render: no GL object outlives a call.
-      depth_map::Passes passes(gl, scene, options_);
+      Scene moved;  // the frame's depths in local coordinates, as render drew them
+      depth_map::Passes passes(gl, in_local_coordinates(scene, moved), options_);
       passes.depth_from_lights(ignored, ignored);
       passes.mask_passes();
     }

@@ -6,6 +6,7 @@
 #include "techniques/step_clock.h"
 
 #include "scene/lighting.h"
+#include "scene/local_origin.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
 #include "techniques/light_passes/scene_pass.h"
@@ -247,7 +248,11 @@ using Clock = std::chrono::steady_clock;
 
 class PlanarShadow final : public ShadowTechnique {
  public:
-  FrameReport render(const Scene &scene, bool synchronous) override {
+  FrameReport render(const Scene &world_scene, bool synchronous) override {
+    // Every step in local coordinates (local_origin.h): far from the world's origin a caster
+    // projected onto a receiver's plane in float lost its corners (a NaN vertex at 3.6 km).
+    const Scene &scene = in_local_coordinates(world_scene, moved_);
+    moved_used_ = &scene == &moved_;
     FrameReport report;
     const auto frame_start = Clock::now();
     auto start = frame_start;
@@ -277,7 +282,9 @@ class PlanarShadow final : public ShadowTechnique {
     return report;
   }
 
-  void render_mask(const Scene &scene) override {
+  void render_mask(const Scene &world_scene) override {
+    // The scene render drew, in its local coordinates: frame_ points at its objects.
+    const Scene &scene = moved_used_ ? moved_ : world_scene;
     // Step 3 left its seals in the depth buffer, which its covers would fail. The scene pass's
     // depth is drawn again (colour writes off; the same vertices give the same depths), so the
     // covers pass exactly where they darkened the frame.
@@ -290,6 +297,8 @@ class PlanarShadow final : public ShadowTechnique {
  private:
   PlanarShadows shadows_;
   FrameGeometry frame_;
+  Scene moved_;              // the last frame's scene in local coordinates, when it was moved
+  bool moved_used_ = false;  // whether render drew moved_ (else the scene it was given)
 };
 
 }  // namespace
