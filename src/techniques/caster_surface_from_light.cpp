@@ -82,6 +82,19 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4
                   (std::abs(face.to_b.x) + std::abs(face.to_b.y)) *
                       std::abs(face.inverse_w.z - face.inverse_w.x)) /
                  std::abs(face.area);
+    const glm::dvec2 to_w(double(face.inverse_w.y) - face.inverse_w.x,
+                          double(face.inverse_w.z) - face.inverse_w.x);
+    const glm::dvec2 to_b(face.to_b), to_c(face.to_c);
+    face.gradient = glm::dvec2(to_c.y * to_w.x - to_b.y * to_w.y, to_b.x * to_w.y - to_c.x * to_w.x) /
+                    double(face.area);
+    const glm::vec2 corners[3] = {face.a, face.a + face.to_b, face.a + face.to_c};
+    const float sign = face.area > 0.0f ? 1.0f : -1.0f;
+    for (int edge = 0; edge < 3; ++edge) {
+      const glm::vec2 along = corners[(edge + 1) % 3] - corners[edge];
+      face.edge_start[edge] = corners[edge];
+      face.edge_normal[edge] = sign * glm::vec2(-along.y, along.x);
+      face.edge_length[edge] = std::abs(along.x) + std::abs(along.y);
+    }
     low_ = glm::min(low_, face.low), high_ = glm::max(high_, face.high);
     faces_.push_back(face);
   }
@@ -130,29 +143,24 @@ int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
 bool CasterSurfaceFromLight::face_can_shadow(const Face &face) const {
   constexpr float kSlack = 64.0f * std::numeric_limits<float>::epsilon();
   const float reach = polygon_reach_ + face.reach;  // NDC: bounds every coordinate compared
-  const float sign = face.area > 0.0f ? 1.0f : -1.0f;
-  const glm::vec2 corners[3] = {face.a, face.a + face.to_b, face.a + face.to_c};
+  const std::size_t count = polygon_.size();
+  const PolygonCorner *polygon = polygon_.data();
   for (int edge = 0; edge < 3; ++edge) {
-    const glm::vec2 &from = corners[edge];
-    const glm::vec2 along = corners[(edge + 1) % 3] - from;
-    const float margin = kSlack * (std::abs(along.x) + std::abs(along.y)) * reach;
+    const float margin = kSlack * face.edge_length[edge] * reach;
     if (!(margin < INFINITY)) return true;  // NaN or overflow: let the clipping answer
-    const bool outside = std::all_of(polygon_.begin(), polygon_.end(), [&](const PolygonCorner &p) {
-      const glm::vec2 d = p.ndc - from;
-      return sign * (along.x * d.y - along.y * d.x) < -margin;
-    });
-    if (outside) return false;
+    const glm::vec2 &start = face.edge_start[edge], &normal = face.edge_normal[edge];
+    std::size_t i = 0;
+    while (i < count && glm::dot(normal, polygon[i].ndc - start) < -margin) ++i;
+    if (i == count) return false;
   }
   const float margin = kSlack * (reach * face.slope + face.largest_inverse_w + polygon_inverse_w_);
   if (!(margin < INFINITY)) return true;
-  return std::any_of(polygon_.begin(), polygon_.end(), [&](const PolygonCorner &p) {
-    const glm::vec2 d = p.ndc - face.a;
-    const float u = (d.x * face.to_c.y - d.y * face.to_c.x) / face.area;
-    const float v = (face.to_b.x * d.y - face.to_b.y * d.x) / face.area;
-    const float plane = face.inverse_w.x + u * (face.inverse_w.y - face.inverse_w.x) +
-                        v * (face.inverse_w.z - face.inverse_w.x);
-    return !(plane * (1.0f - kTouch) - p.inverse_w < -margin);
-  });
+  for (std::size_t i = 0; i < count; ++i) {
+    const double plane =
+        face.inverse_w.x + glm::dot(face.gradient, glm::dvec2(polygon[i].ndc) - glm::dvec2(face.a));
+    if (!(plane * (1.0 - kTouch) - polygon[i].inverse_w < -double(margin))) return true;
+  }
+  return false;
 }
 
 bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t count) const {

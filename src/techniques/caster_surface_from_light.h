@@ -59,10 +59,17 @@ class CasterSurfaceFromLight {
     float area = 0.0f;        // twice the signed NDC area, never near 0 (those are dropped)
     glm::vec3 inverse_w;      // 1 / w at the three corners
     glm::vec2 low, high;      // NDC box
-    // For may_shadow's tests that skip a face without clipping (face_can_shadow): the largest
-    // 1 / w at a corner, the largest |NDC coordinate| of a corner, and how much 1 / w on the
-    // face's plane moves per unit NDC (x and y alike: |d 1/w / du| |du / dNDC| + the same for v).
+    // For may_shadow's tests that skip a face without clipping (face_can_shadow), all NDC: the
+    // largest 1 / w at a corner, the largest |coordinate| of a corner, how much 1 / w on the
+    // face's plane can move per unit of x and y (|d 1/w / du| |du / dNDC| + the same for v),
+    // that plane's 1 / w per unit x and y (in double: the test's own rounding stays far below
+    // its margin), and per edge (a to b, b to c, c to a) its start,
+    // its normal towards the face's inside (the edge turned by a quarter, not unit) and the
+    // edge's |x| + |y|.
     float largest_inverse_w = 0.0f, reach = 0.0f, slope = 0.0f;
+    glm::dvec2 gradient{0.0};
+    glm::vec2 edge_start[3], edge_normal[3];
+    float edge_length[3];
   };
   bool face_can_shadow(const Face &face) const;
   static constexpr int kGrid = 32;  // cells a side over the faces' NDC box
