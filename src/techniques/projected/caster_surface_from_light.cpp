@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace gs {
 namespace {
@@ -73,6 +74,27 @@ CasterSurfaceFromLight::CasterSurfaceFromLight(const Mesh &mesh, const glm::mat4
     face.inverse_w = {1.0f / a.w, 1.0f / b.w, 1.0f / c.w};
     face.low = glm::min(face.a, face.a + glm::min(face.to_b, face.to_c));
     face.high = glm::max(face.a, face.a + glm::max(face.to_b, face.to_c));
+    face.largest_inverse_w = std::max({face.inverse_w.x, face.inverse_w.y, face.inverse_w.z});
+    face.reach = std::max({std::abs(face.low.x), std::abs(face.low.y), std::abs(face.high.x),
+                           std::abs(face.high.y)});
+    face.slope = ((std::abs(face.to_c.x) + std::abs(face.to_c.y)) *
+                      std::abs(face.inverse_w.y - face.inverse_w.x) +
+                  (std::abs(face.to_b.x) + std::abs(face.to_b.y)) *
+                      std::abs(face.inverse_w.z - face.inverse_w.x)) /
+                 std::abs(face.area);
+    const glm::dvec2 to_w(double(face.inverse_w.y) - face.inverse_w.x,
+                          double(face.inverse_w.z) - face.inverse_w.x);
+    const glm::dvec2 to_b(face.to_b), to_c(face.to_c);
+    face.gradient = glm::dvec2(to_c.y * to_w.x - to_b.y * to_w.y, to_b.x * to_w.y - to_c.x * to_w.x) /
+                    double(face.area);
+    const glm::vec2 corners[3] = {face.a, face.a + face.to_b, face.a + face.to_c};
+    const float sign = face.area > 0.0f ? 1.0f : -1.0f;
+    for (int edge = 0; edge < 3; ++edge) {
+      const glm::vec2 along = corners[(edge + 1) % 3] - corners[edge];
+      face.edge_start[edge] = corners[edge];
+      face.edge_normal[edge] = sign * glm::vec2(-along.y, along.x);
+      face.edge_length[edge] = std::abs(along.x) + std::abs(along.y);
+    }
     low_ = glm::min(low_, face.low), high_ = glm::max(high_, face.high);
     faces_.push_back(face);
   }
@@ -108,15 +130,52 @@ int CasterSurfaceFromLight::cell_of(float ndc, int axis) const {
   return static_cast<int>(std::clamp(cell, 0.0f, static_cast<float>(kGrid - 1)));
 }
 
+// Whether clipping polygon_ to `face` (below) could find a corner of their common part where
+// the face is nearer the light; false only when it surely cannot, by two tests that clip
+// nothing. Each keeps a margin of kSlack float roundings of the values it compares, more than
+// the clipping's own rounding (a few per clip, three clips) can move them, so a face it skips
+// is one the clipping would have found nothing on: the answer stays the same to the bit.
+// - An edge of the face with every corner of the polygon outside it: the part is empty.
+// - The face's plane (its 1 / w, affine in NDC, taken beyond the face too) not nearer than the
+//   polygon at any of the polygon's corners: the nearness compared, face 1 / w (1 - kTouch) -
+//   polygon 1 / w, is affine in (NDC, 1 / w), and every corner of the part is a blend of the
+//   polygon's corners there, so it is at most its largest at them.
+bool CasterSurfaceFromLight::face_can_shadow(const Face &face) const {
+  constexpr float kSlack = 64.0f * std::numeric_limits<float>::epsilon();
+  const float reach = polygon_reach_ + face.reach;  // NDC: bounds every coordinate compared
+  const std::size_t count = polygon_.size();
+  const PolygonCorner *polygon = polygon_.data();
+  for (int edge = 0; edge < 3; ++edge) {
+    const float margin = kSlack * face.edge_length[edge] * reach;
+    if (!(margin < INFINITY)) return true;  // NaN or overflow: let the clipping answer
+    const glm::vec2 &start = face.edge_start[edge], &normal = face.edge_normal[edge];
+    std::size_t i = 0;
+    while (i < count && glm::dot(normal, polygon[i].ndc - start) < -margin) ++i;
+    if (i == count) return false;
+  }
+  const float margin = kSlack * (reach * face.slope + face.largest_inverse_w + polygon_inverse_w_);
+  if (!(margin < INFINITY)) return true;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double plane =
+        face.inverse_w.x + glm::dot(face.gradient, glm::dvec2(polygon[i].ndc) - glm::dvec2(face.a));
+    if (!(plane * (1.0 - kTouch) - polygon[i].inverse_w < -double(margin))) return true;
+  }
+  return false;
+}
+
 bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t count) const {
   if (!usable_) return true;
   std::vector<PolygonCorner> &polygon = polygon_;
   polygon.clear();
   glm::vec2 low(INFINITY), high(-INFINITY);
+  polygon_reach_ = 0.0f, polygon_inverse_w_ = 0.0f;
   for (std::size_t i = 0; i < count; ++i) {
     if (!(light_clip[i].w > 0.0f)) return true;
     polygon.push_back({glm::vec2(light_clip[i]) / light_clip[i].w, 1.0f / light_clip[i].w});
     low = glm::min(low, polygon.back().ndc), high = glm::max(high, polygon.back().ndc);
+    polygon_reach_ = std::max({polygon_reach_, std::abs(polygon.back().ndc.x),
+                               std::abs(polygon.back().ndc.y)});
+    polygon_inverse_w_ = std::max(polygon_inverse_w_, polygon.back().inverse_w);
   }
   if (faces_.empty() || glm::any(glm::lessThan(high, low_)) || glm::any(glm::lessThan(high_, low))) {
     return false;
@@ -134,6 +193,7 @@ bool CasterSurfaceFromLight::may_shadow(const glm::vec4 *light_clip, std::size_t
         stamp_[f] = query_;
         const Face &face = faces_[f];
         if (glm::any(glm::lessThan(high, face.low)) || glm::any(glm::lessThan(face.high, low))) continue;
+        if (!face_can_shadow(face)) continue;
         // The polygon's part over the face (convex), then both depths at its corners.
         part = polygon;
         const float sign = face.area > 0.0f ? 1.0f : -1.0f;

@@ -59,7 +59,19 @@ class CasterSurfaceFromLight {
     float area = 0.0f;        // twice the signed NDC area, never near 0 (those are dropped)
     glm::vec3 inverse_w;      // 1 / w at the three corners
     glm::vec2 low, high;      // NDC box
+    // For may_shadow's tests that skip a face without clipping (face_can_shadow), all NDC: the
+    // largest 1 / w at a corner, the largest |coordinate| of a corner, how much 1 / w on the
+    // face's plane can move per unit of x and y (|d 1/w / du| |du / dNDC| + the same for v),
+    // that plane's 1 / w per unit x and y (in double: the test's own rounding stays far below
+    // its margin), and per edge (a to b, b to c, c to a) its start,
+    // its normal towards the face's inside (the edge turned by a quarter, not unit) and the
+    // edge's |x| + |y|.
+    float largest_inverse_w = 0.0f, reach = 0.0f, slope = 0.0f;
+    glm::dvec2 gradient{0.0};
+    glm::vec2 edge_start[3], edge_normal[3];
+    float edge_length[3];
   };
+  bool face_can_shadow(const Face &face) const;
   static constexpr int kGrid = 32;  // cells a side over the faces' NDC box
   int cell_of(float ndc, int axis) const;
 
@@ -72,6 +84,8 @@ class CasterSurfaceFromLight {
   mutable std::size_t query_ = 0;
   // may_shadow's polygons, kept so that a query (one per receiver triangle) allocates nothing.
   mutable std::vector<PolygonCorner> polygon_, part_, scratch_;
+  // The polygon of the query in hand: its largest |NDC coordinate| and its largest 1 / w.
+  mutable float polygon_reach_ = 0.0f, polygon_inverse_w_ = 0.0f;
   // may_shadow_triangle's answers per receiver and triangle: -1 not asked yet, else 0 or 1.
   mutable std::vector<std::pair<const SceneObject *, std::vector<signed char>>> answers_;
 };

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -129,27 +130,42 @@ FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
   return space;
 }
 
-// LightView::silhouette by rows: per row of fine cells and column x, the first silhouette
-// column at or after x and the last at or before it (kFineCells and -1 when there is none), so
-// that a box's silhouette cells are bounded in a step per row.
-struct SilhouetteRows {
+// LightView::silhouette by rows, as bits (cell x of a row at bit x % 64 of its word x / 64), so
+// that a box's silhouette cells are bounded in a step or two per row: the first silhouette
+// column at or after x and the last at or before it (kFineCells and -1 when there is none).
+class SilhouetteRows {
+ public:
   static constexpr int kSide = LightView::kFineCells;
-  std::vector<int> next, previous;  // [row * (kSide + 1) + x]
-  explicit SilhouetteRows(const LightView &view)
-      : next(static_cast<std::size_t>(kSide * (kSide + 1)), kSide),
-        previous(static_cast<std::size_t>(kSide * (kSide + 1)), -1) {
+  static_assert(kSide % 64 == 0, "whole words per row");
+  explicit SilhouetteRows(const LightView &view) : bits_(static_cast<std::size_t>(kSide * kWords), 0) {
     for (int y = 0; y < kSide; ++y) {
-      int *row_next = &next[static_cast<std::size_t>(y * (kSide + 1))];
-      int *row_previous = &previous[static_cast<std::size_t>(y * (kSide + 1))];
-      for (int x = kSide - 1; x >= 0; --x) {
-        row_next[x] = view.silhouette[static_cast<std::size_t>(y * kSide + x)] ? x : row_next[x + 1];
-      }
       for (int x = 0; x < kSide; ++x) {
-        const int before = x > 0 ? row_previous[x - 1] : -1;
-        row_previous[x] = view.silhouette[static_cast<std::size_t>(y * kSide + x)] ? x : before;
+        if (view.silhouette[static_cast<std::size_t>(y * kSide + x)]) {
+          bits_[static_cast<std::size_t>(y * kWords + x / 64)] |= std::uint64_t{1} << (x % 64);
+        }
       }
     }
   }
+  int next(int y, int x) const {  // 0 <= x < kSide
+    const std::uint64_t *row = &bits_[static_cast<std::size_t>(y * kWords)];
+    for (int word = x / 64; word < kWords; ++word) {
+      const std::uint64_t from = word == x / 64 ? ~std::uint64_t{0} << (x % 64) : ~std::uint64_t{0};
+      if (const std::uint64_t found = row[word] & from) return word * 64 + __builtin_ctzll(found);
+    }
+    return kSide;
+  }
+  int previous(int y, int x) const {  // 0 <= x < kSide
+    const std::uint64_t *row = &bits_[static_cast<std::size_t>(y * kWords)];
+    for (int word = x / 64; word >= 0; --word) {
+      const std::uint64_t to = word == x / 64 ? ~std::uint64_t{0} >> (63 - x % 64) : ~std::uint64_t{0};
+      if (const std::uint64_t found = row[word] & to) return word * 64 + 63 - __builtin_clzll(found);
+    }
+    return -1;
+  }
+
+ private:
+  static constexpr int kWords = kSide / 64;
+  std::vector<std::uint64_t> bits_;  // [row * kWords + word]
 };
 
 // The world-space planes of the rectangle (in the texture) around the silhouette's cells
@@ -167,10 +183,9 @@ bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm
   int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
   const int box_x0 = index(low.x - kReachTexels), box_x1 = index(high.x + kReachTexels);
   for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
-    const auto row = static_cast<std::size_t>(y * (SilhouetteRows::kSide + 1));
-    const int first = rows.next[row + static_cast<std::size_t>(box_x0)];
+    const int first = rows.next(y, box_x0);
     if (first > box_x1) continue;  // no silhouette cell in the box on this row
-    const int last = rows.previous[row + static_cast<std::size_t>(box_x1)];
+    const int last = rows.previous(y, box_x1);
     x0 = std::min(x0, first), x1 = std::max(x1, last), y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
   if (x1 < 0) return false;
@@ -274,6 +289,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                           options.bilinear && !options.chroma_key, receiver_edge_error);
   };
 
+  std::vector<glm::vec4> lc;    // the receiver in hand's vertices, light clip, and their
+  std::vector<unsigned> flags;  // Listing 2 flags (below)
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     const ProjectedObject &receiver = frame.objects[r];
     if (r == caster || !receiver.object->receives_shadow) continue;
@@ -292,8 +309,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     // texture is exact, so it takes that texture whole and is not cut.
     const CasterSurfaceFromLight *own_surface = nullptr;
     const std::size_t n = receiver.world.size();
-    std::vector<glm::vec4> lc(n);  // light clip
-    std::vector<unsigned> flags(n);
+    lc.resize(n);  // light clip
+    flags.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       lc[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
       const glm::vec4 &p = lc[i];

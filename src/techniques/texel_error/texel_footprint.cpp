@@ -83,13 +83,20 @@ FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &no
   if (world.size() < 3) return sample;
   glm::vec3 t1, t2;
   plane_tangents(normal, t1, t2);
-  // Screen pixels of the corners (inside the camera's view, so w > 0), for the area.
-  std::vector<glm::vec2> screen;
-  for (const ClipVertex &v : world) {
-    sample.pixels_per_texel = std::max(sample.pixels_per_texel, stretch_at(space, v.world, t1, t2));
-    screen.push_back(footprint_screen_pixels(space, v.world));
+  // Screen pixels of the corners (inside the camera's view, so w > 0), for the area: summed
+  // as polygon_area sums them, edge by edge from the first corner, without keeping them.
+  glm::vec2 first(0.0f), previous(0.0f);
+  float twice_area = 0.0f;
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    const glm::vec3 &corner = world[i].world;
+    sample.pixels_per_texel = std::max(sample.pixels_per_texel, stretch_at(space, corner, t1, t2));
+    const glm::vec2 screen = footprint_screen_pixels(space, corner);
+    if (i == 0) first = screen;
+    else twice_area += previous.x * screen.y - previous.y * screen.x;
+    previous = screen;
   }
-  sample.screen_area = polygon_area(screen);
+  twice_area += previous.x * first.y - previous.y * first.x;
+  sample.screen_area = 0.5f * std::abs(twice_area);
   return sample;
 }
 
