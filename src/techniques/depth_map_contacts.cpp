@@ -163,10 +163,12 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
           if (!replay.in_map(sample.point, foot_texels, foot_depth)) continue;
           const glm::dvec2 foot_screen(footprint_screen_pixels(space, glm::vec3(sample.point)));
           // Walks the receiver from the foot along `direction` (world, unit, in its plane), at
-          // most eight texels and not past its triangle; the screen extent (pixels) of the run of
-          // wrong points beside the foot (straight across it: its whole length; `slanted` along
-          // an edge: only its part across the foot), or a negative one where none began there.
-          auto wrong_run = [&](const dvec3 &direction, bool slanted, bool &ends_at_edge) -> double {
+          // most eight texels and not past its triangle (`left`: the walk stopped there); the
+          // screen extent (pixels) of the run of wrong points beside the foot (straight across
+          // it: its whole length; `slanted` along an edge: only its part across the foot), or a
+          // negative one where none began there.
+          auto wrong_run = [&](const dvec3 &direction, bool slanted, bool &ends_at_edge,
+                               bool &left) -> double {
             // Metres along `direction` per texel of this map, from a small step.
             const double probe_metres = 1e-3 * std::max(glm::length(sample.point - light_position), 1e-6);
             glm::dvec2 next_texels;
@@ -177,7 +179,7 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
             // Walked a quarter texel at a time for two texels, then half a texel to eight.
             double farthest = 0.0;  // texels: where the last wrong point lies
             bool wrong_seen = false, wrong_truth = false;
-            ends_at_edge = false;
+            ends_at_edge = false, left = false;
             for (int step = 1; step <= 20; ++step) {
               const double at = step <= 8 ? 0.25 * step : 2.0 + 0.5 * (step - 8);  // texels
               const dvec3 point = sample.point + direction * (at / texels_per_metre);
@@ -186,7 +188,10 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
                 const dvec3 inward = glm::cross(sample.normal, sample.corner[(m + 1) % 3] - sample.corner[m]);
                 inside = inside && glm::dot(inward, point - sample.corner[m]) >= 0.0;
               }
-              if (!inside) break;
+              if (!inside) {
+                left = true;
+                break;
+              }
               const glm::dvec4 seen = camera_clip * glm::dvec4(point, 1.0);
               if (!(seen.w > 0.0) || std::abs(seen.x) > seen.w || std::abs(seen.y) > seen.w) break;
               // Counted where the camera sees it past the caster and the light shines on it.
@@ -229,8 +234,10 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
           // under a light along its axis) the walk straight across the foot leaves it within a
           // texel, while the receiver-plane bias, one for the whole triangle, lifts all of it
           // past the caster (sunk_16563: 1.4% interior false light on a cylinder through a plate,
-          // estimated at 0.7 pixels). So it is walked along that edge too, and the larger run
-          // on each side counts.
+          // estimated at 0.7 pixels). Where the straight walk left its triangle, it is walked
+          // along that edge too, and the larger run on that side counts. (Only there: beside a
+          // curved foot on a wide triangle, a slanted walk runs along the band of the foot's
+          // other samples and counts it again.)
           dvec3 longest(0.0);
           for (int m = 0; m < 3; ++m) {
             const dvec3 edge = sample.corner[(m + 1) % 3] - sample.corner[m];
@@ -239,13 +246,13 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
           longest = glm::normalize(longest);
           for (const double way : {1.0, -1.0}) {
             const dvec3 straight = across * way;
-            bool ends_at_edge = false;
-            double extent = wrong_run(straight, false, ends_at_edge);
+            bool ends_at_edge = false, left = false;
+            double extent = wrong_run(straight, false, ends_at_edge, left);
             const double band = ends_at_edge ? 2.0 * sample.excused : sample.excused;
             double error = extent < 0.0 ? 0.0 : std::max(extent - band, 0.0);
             const double slant = glm::dot(longest, straight);
-            if (std::abs(slant) > 0.0) {
-              extent = wrong_run(longest * (slant > 0.0 ? 1.0 : -1.0), true, ends_at_edge);
+            if (left && std::abs(slant) > 0.0) {
+              extent = wrong_run(longest * (slant > 0.0 ? 1.0 : -1.0), true, ends_at_edge, left);
               const double along_band = ends_at_edge ? 2.0 * sample.excused : sample.excused;
               if (extent >= 0.0) error = std::max(error, extent - along_band);
             }
