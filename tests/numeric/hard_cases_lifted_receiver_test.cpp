@@ -6,9 +6,9 @@
 // whole depth span where the light grazes it, which lifts all of the triangle past the plate:
 // interior false light along the cylinder, served (the audit's scene 1.36% of the receiver
 // pixels). The estimate beside the feet walked each foot triangle only straight across the foot,
-// which leaves a long thin triangle within a texel; it now walks it along its longest edge too,
-// and the depth map refuses the plate's shadow by name. Every other technique is right, or
-// refuses by name.
+// which leaves a long thin triangle within a texel; where it leaves the triangle, it now walks
+// it along its longest edge too, and the depth map refuses the plate's shadow by name. Every
+// other technique is right, or refuses by name.
 #include "hard_case_checks.h"
 
 #include <gtest/gtest.h>
