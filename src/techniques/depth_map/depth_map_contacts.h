@@ -28,11 +28,12 @@ struct ContactError {
 // the `side`-texel map of `frustum` (light `light`, the technique's `options`) makes beside the
 // lines where the caster's triangles meet a receiving triangle that faces the light, on the parts
 // of those receivers the camera sees. At each sample of a foot the receiver is walked away from
-// it on both sides, and each point's shadow from that caster (a ray to the light) is compared
-// with the lookup of a map that holds the caster and the receiver (when it casts) as step 1 draws
-// them: its facet push, slope term and bounded copy, the receiver's lowered depth, the 2x2
-// percentage-closer lookup or the nearest texel. What is wrong beyond the excused pixels of the
-// foot's edge on screen counts.
+// it on both sides (straight across the foot, and along its triangle's longest edge where the
+// straight walk leaves the triangle), and each point's shadow from that caster (a ray to the
+// light) is compared with the lookup of a map that holds the caster and the receiver (when it
+// casts) as step 1 draws them: its facet push, slope term and bounded copy, the receiver's
+// lowered depth, the 2x2 percentage-closer lookup or the nearest texel. What is wrong beyond the
+// excused pixels of the foot's edge on screen counts.
 std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                          const LightFrustum &frustum, const SpotLight &light,
                                          int side, const TechniqueOptions &options);
