@@ -65,7 +65,12 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
         project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
         for (const GrVertex &v : screen) polygon.emplace_back(v.x, v.y);
       }
+      // Wholly on the screen (most triangles): clipping would keep the polygon as it is.
+      const bool on_screen = std::all_of(polygon.begin(), polygon.end(), [&](const glm::vec2 &p) {
+        return p.x >= 0.0f && p.x <= right && p.y >= 0.0f && p.y <= top;
+      });
       for (const glm::vec3 &side : sides) {  // Sutherland-Hodgman
+        if (on_screen) break;
         clipped.clear();
         for (std::size_t i = 0; i < polygon.size(); ++i) {
           const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
