@@ -1,5 +1,5 @@
 // Step 3: the receivers' (s, t) from the light's view, and which receiver triangles can be in
-// the caster's shadow (Listing 2's flags, the beam, the texture's occupied cells), and how many
+// the caster's shadow (Listing 2's flags, the beam, the texture's cells: receiver_cells.h), and how many
 // screen pixels a texel spans where its edge can fall (texel_footprint.h). Spaces: world
 // and light view / light clip in; camera Glide screen vertices (pixels, y down) out, with (s, t)
 // in Glide texture units (0..256 across the shadow texture) as sow, tow over their divisor.
@@ -8,6 +8,7 @@
 #include "techniques/projected/caster_surface_from_light.h"
 #include "techniques/projected/hidden_layers.h"
 #include "techniques/geometry/light_beam.h"
+#include "techniques/projected/receiver_cells.h"
 #include "techniques/projected/receiver_depth_planes.h"
 #include "techniques/projected/silhouette_segment_grid.h"
 
@@ -26,60 +27,6 @@ glm::vec3 shadow_stq(const glm::mat4 &light_clip, const glm::vec3 &world) {
   const glm::vec4 clip = light_clip * glm::vec4(world, 1.0f);
   return {(0.5f * clip.x + 0.5f * clip.w) * 256.0f, (0.5f * clip.w - 0.5f * clip.y) * 256.0f,
           clip.w};
-}
-
-// The box (light screen, texels) a receiver polygon spans, given by its light clip coordinates
-// (all with w > 0): its projection is convex, so its corners bound it.
-void texel_box(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
-               glm::vec2 &low, glm::vec2 &high) {
-  low = glm::vec2(INFINITY), high = glm::vec2(-INFINITY);
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
-                          0.5f) * static_cast<float>(view.size);  // texels
-    low = glm::min(low, uv);
-    high = glm::max(high, uv);
-  }
-}
-
-// Whether a receiver polygon, given by its light clip coordinates (all with w > 0), can be in
-// the caster's shadow: it must see an occupied cell of the texture (its projection is convex, so
-// its bounding box bounds it; one texel of margin covers bilinear filtering's reach) and reach
-// beyond the caster's nearest point in that cell.
-bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
-  glm::vec2 low(INFINITY), high(-INFINITY);
-  float farthest = 0.0f;
-  for (std::size_t i = 0; i < count; ++i) {
-    farthest = std::max(farthest, light_clip[i].w);
-    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
-                          0.5f) * static_cast<float>(view.size);  // texels
-    low = glm::min(low, uv);
-    high = glm::max(high, uv);
-  }
-  const float cell = static_cast<float>(view.size) / LightView::kCells;
-  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
-  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
-  const int x1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
-  const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      const auto index = static_cast<std::size_t>(y * LightView::kCells + x);
-      if (view.occupied[index] && farthest > view.nearest[index]) return true;
-    }
-  }
-  return false;
-}
-
-// Whether any of LightView::covered's cells lies within reach of a receiver polygon given by
-// its light clip coordinates (all with w > 0): the texel box its projection spans (convex, so
-// its corners bound it), widened by kReachTexels: bilinear filtering reads texels whose centres
-// lie less than one texel from the sample, and the half texel more absorbs the shim's 1/16
-// snapping of the caster's vertices in step 1 and of (s, t) in step 5 (a miss here would change
-// bytes; a spare cell only costs its drawing).
-bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
-  constexpr float kReachTexels = 1.5f;
-  glm::vec2 low, high;
-  texel_box(view, light_clip, count, low, high);
-  return view.covered_near(low, high, kReachTexels);
 }
 
 float shadow_alpha(const SpotLight &light, const LightView &view, const glm::vec3 &world,
@@ -128,78 +75,6 @@ FootprintSpace footprint_space(const Scene &scene, const FrameGeometry &frame,
     space.planes.push_back(camera_planes * side);
   }
   return space;
-}
-
-// LightView::silhouette by rows, as bits (cell x of a row at bit x % 64 of its word x / 64), so
-// that a box's silhouette cells are bounded in a step or two per row: the first silhouette
-// column at or after x and the last at or before it (kFineCells and -1 when there is none).
-class SilhouetteRows {
- public:
-  static constexpr int kSide = LightView::kFineCells;
-  static_assert(kSide % 64 == 0, "whole words per row");
-  explicit SilhouetteRows(const LightView &view) : bits_(static_cast<std::size_t>(kSide * kWords), 0) {
-    for (int y = 0; y < kSide; ++y) {
-      for (int x = 0; x < kSide; ++x) {
-        if (view.silhouette[static_cast<std::size_t>(y * kSide + x)]) {
-          bits_[static_cast<std::size_t>(y * kWords + x / 64)] |= std::uint64_t{1} << (x % 64);
-        }
-      }
-    }
-  }
-  int next(int y, int x) const {  // 0 <= x < kSide
-    const std::uint64_t *row = &bits_[static_cast<std::size_t>(y * kWords)];
-    for (int word = x / 64; word < kWords; ++word) {
-      const std::uint64_t from = word == x / 64 ? ~std::uint64_t{0} << (x % 64) : ~std::uint64_t{0};
-      if (const std::uint64_t found = row[word] & from) return word * 64 + __builtin_ctzll(found);
-    }
-    return kSide;
-  }
-  int previous(int y, int x) const {  // 0 <= x < kSide
-    const std::uint64_t *row = &bits_[static_cast<std::size_t>(y * kWords)];
-    for (int word = x / 64; word >= 0; --word) {
-      const std::uint64_t to = word == x / 64 ? ~std::uint64_t{0} >> (63 - x % 64) : ~std::uint64_t{0};
-      if (const std::uint64_t found = row[word] & to) return word * 64 + 63 - __builtin_clzll(found);
-    }
-    return -1;
-  }
-
- private:
-  static constexpr int kWords = kSide / 64;
-  std::vector<std::uint64_t> bits_;  // [row * kWords + word]
-};
-
-// The world-space planes of the rectangle (in the texture) around the silhouette's cells
-// (LightView::silhouette: where the shadow's edge can lie; deep inside a shadow the texels' size
-// moves no edge) that a receiver polygon, given by its light clip coordinates (all w > 0), can
-// see: those within its texel box widened by bilinear filtering's reach, as in
-// reaches_covered_cell. Outside it no shadow edge falls on the polygon. False when none.
-bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm::vec4 *light_clip,
-                    std::size_t count, const glm::mat4 &world_to_light_clip,
-                    std::vector<glm::vec4> &planes) {
-  constexpr float kReachTexels = 1.5f;
-  glm::vec2 low, high;
-  texel_box(view, light_clip, count, low, high);
-  auto index = [&](float texels) { return view.fine_cell_of(texels); };
-  int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
-  const int box_x0 = index(low.x - kReachTexels), box_x1 = index(high.x + kReachTexels);
-  for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
-    const int first = rows.next(y, box_x0);
-    if (first > box_x1) continue;  // no silhouette cell in the box on this row
-    const int last = rows.previous(y, box_x1);
-    x0 = std::min(x0, first), x1 = std::max(x1, last), y0 = std::min(y0, y), y1 = std::max(y1, y);
-  }
-  if (x1 < 0) return false;
-  // Light NDC of the rectangle's sides, a texel wider (bilinear's reach; rows run down, y up).
-  const float ndc_cell = 2.0f / LightView::kFineCells, texel = 2.0f / static_cast<float>(view.size);
-  auto at = [&](int cells) { return static_cast<float>(cells) * ndc_cell; };
-  const float left = -1.0f + at(x0) - texel, right = -1.0f + at(x1 + 1) + texel;
-  const float top = 1.0f - at(y0) + texel, bottom = 1.0f - at(y1 + 1) - texel;
-  const glm::mat4 to_world_planes = glm::transpose(world_to_light_clip);  // clip plane -> world
-  for (const glm::vec4 &side : {glm::vec4(1, 0, 0, -left), glm::vec4(-1, 0, 0, right),
-                                glm::vec4(0, 1, 0, -bottom), glm::vec4(0, -1, 0, top)}) {
-    planes.push_back(to_world_planes * side);
-  }
-  return true;
 }
 
 }  // namespace

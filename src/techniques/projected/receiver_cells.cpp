@@ -1,0 +1,83 @@
+// Which receiver polygons can take the caster's shadow or its edge (receiver_cells.h). Spaces:
+// light clip in; light screen texels and the texture's cells between; world planes out.
+#include "techniques/projected/receiver_cells.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gs {
+namespace {
+
+// How far beyond a receiver polygon's texel box the texture can reach it (texels): bilinear
+// filtering reads texels whose centres lie less than one texel from the sample, and the half
+// texel more absorbs the shim's 1/16 snapping of the caster's vertices in step 1 and of (s, t)
+// in step 5 (a miss here would change bytes; a spare cell only costs its drawing).
+constexpr float kReachTexels = 1.5f;
+
+}  // namespace
+
+void texel_box(const LightView &view, const glm::vec4 *light_clip, std::size_t count,
+               glm::vec2 &low, glm::vec2 &high) {
+  low = glm::vec2(INFINITY), high = glm::vec2(-INFINITY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec2 uv = (glm::vec2(light_clip[i].x, -light_clip[i].y) / light_clip[i].w * 0.5f +
+                          0.5f) * static_cast<float>(view.size);  // texels
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+}
+
+bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  glm::vec2 low, high;
+  texel_box(view, light_clip, count, low, high);
+  float farthest = 0.0f;
+  for (std::size_t i = 0; i < count; ++i) farthest = std::max(farthest, light_clip[i].w);
+  const float cell = static_cast<float>(view.size) / LightView::kCells;
+  const int x0 = std::max(0, static_cast<int>(std::floor((low.x - 1.0f) / cell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((low.y - 1.0f) / cell)));
+  const int x1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.x + 1.0f) / cell)));
+  const int y1 = std::min(LightView::kCells - 1, static_cast<int>(std::floor((high.y + 1.0f) / cell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const auto index = static_cast<std::size_t>(y * LightView::kCells + x);
+      if (view.occupied[index] && farthest > view.nearest[index]) return true;
+    }
+  }
+  return false;
+}
+
+bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count) {
+  glm::vec2 low, high;
+  texel_box(view, light_clip, count, low, high);
+  return view.covered_near(low, high, kReachTexels);
+}
+
+bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm::vec4 *light_clip,
+                    std::size_t count, const glm::mat4 &world_to_light_clip,
+                    std::vector<glm::vec4> &planes) {
+  glm::vec2 low, high;
+  texel_box(view, light_clip, count, low, high);
+  auto index = [&](float texels) { return view.fine_cell_of(texels); };
+  int x0 = LightView::kFineCells, y0 = LightView::kFineCells, x1 = -1, y1 = -1;
+  const int box_x0 = index(low.x - kReachTexels), box_x1 = index(high.x + kReachTexels);
+  for (int y = index(low.y - kReachTexels); y <= index(high.y + kReachTexels); ++y) {
+    const int first = rows.next(y, box_x0);
+    if (first > box_x1) continue;  // no silhouette cell in the box on this row
+    const int last = rows.previous(y, box_x1);
+    x0 = std::min(x0, first), x1 = std::max(x1, last), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  if (x1 < 0) return false;
+  // Light NDC of the rectangle's sides, a texel wider (bilinear's reach; rows run down, y up).
+  const float ndc_cell = 2.0f / LightView::kFineCells, texel = 2.0f / static_cast<float>(view.size);
+  auto at = [&](int cells) { return static_cast<float>(cells) * ndc_cell; };
+  const float left = -1.0f + at(x0) - texel, right = -1.0f + at(x1 + 1) + texel;
+  const float top = 1.0f - at(y0) + texel, bottom = 1.0f - at(y1 + 1) - texel;
+  const glm::mat4 to_world_planes = glm::transpose(world_to_light_clip);  // clip plane -> world
+  for (const glm::vec4 &side : {glm::vec4(1, 0, 0, -left), glm::vec4(-1, 0, 0, right),
+                                glm::vec4(0, 1, 0, -bottom), glm::vec4(0, -1, 0, top)}) {
+    planes.push_back(to_world_planes * side);
+  }
+  return true;
+}
+
+}  // namespace gs
