@@ -11,9 +11,14 @@ unlike the built-in shapes (tori, concave prisms, open bowls, crumpled sheets, s
 with zero-area triangles; scene_meshes.py), written beside the scenes. With --sunk, casters lie
 through dunes, the ring or a tilted plate under a light 1 to 20 degrees above it (scene_sunk.py).
 With --lights, one to three spotlights of every beam shape, cone and attenuation, sometimes with a
-slide projector, over the same receivers and casters (scene_lights.py). Run them through every
-technique against
-the ray-cast truth with
+slide projector, over the same receivers and casters (scene_lights.py). With --near-lights, a
+spotlight stands 0.2 to 2.5 m behind a large caster (a wall, a crate, a sphere, a roof slab, a
+mesh or a tilted panel, 3 to 8 m wide) over a floor often narrower than it, dunes, the ring or a
+tilted plate (scene_near.py). Options for every kind (scene_options.py; the same seed without
+them writes the same file as before they existed): --extra-lights adds one to three spotlights
+and beam maps, --narrow-cones aims cones of 2 to 12 degrees obliquely across the longest
+caster, --camera-behind puts the camera behind the receiver or along it, under the casters.
+Run them through every technique against the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
     build/bench/hard_case_sweeps files /tmp/audit/*.json
@@ -31,6 +36,8 @@ import sys
 import scene_classes
 import scene_lights
 import scene_meshes
+import scene_near
+import scene_options
 import scene_sunk
 
 
@@ -129,20 +136,37 @@ def main():
     parser.add_argument("--lights", action="store_true",
                         help="one to three spotlights of every beam shape, cone and attenuation, "
                              "sometimes a slide projector (scene_lights.py)")
+    parser.add_argument("--near-lights", action="store_true",
+                        help="a spotlight close behind a large caster of every shape, over a floor "
+                             "narrower than it, dunes, the ring or a tilted plate (scene_near.py)")
+    parser.add_argument("--extra-lights", action="store_true",
+                        help="option for every kind: one to three more spotlights, and beam maps on "
+                             "the scene's own, as --lights has them (scene_options.py)")
+    parser.add_argument("--narrow-cones", action="store_true",
+                        help="option for every kind: cones of 2 to 12 degrees aimed obliquely "
+                             "across the longest caster (scene_options.py)")
+    parser.add_argument("--camera-behind", action="store_true",
+                        help="option for every kind: the camera behind the receiver, looking at "
+                             "its back side, or along it under the casters (scene_options.py)")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
     os.makedirs(args.out, exist_ok=True)
-    if args.classes + args.grazing + args.meshes + args.sunk + args.lights > 1:
-        parser.error("--classes, --grazing, --meshes, --sunk and --lights are separate kinds of "
-                     "scene; give one")
+    if args.classes + args.grazing + args.meshes + args.sunk + args.lights + args.near_lights > 1:
+        parser.error("--classes, --grazing, --meshes, --sunk, --lights and --near-lights are "
+                     "separate kinds of scene; give one")
     prefix = ("classes" if args.classes else "grazing" if args.grazing else
               "meshes" if args.meshes else "sunk" if args.sunk else
-              "lights" if args.lights else "random")
+              "lights" if args.lights else "near" if args.near_lights else "random")
+    options = [name for name in scene_options.NAMES if getattr(args, name)]
+    # Options name the file too (sunk-extra-lights_17200.json), beside the same seed without them.
+    prefix = "-".join([prefix] + [name.replace("_", "-") for name in options])
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
-        if args.classes:
+        if args.near_lights:
+            made = scene_near.scene(seed, random.Random(seed), args.out, caster, on_sphere)
+        elif args.classes:
             made = scene_classes.scene(seed)
         elif args.meshes:
             made = scene_meshes.scene(seed, args.out, random.Random(seed))
@@ -152,6 +176,9 @@ def main():
             made = scene_lights.scene(seed, random.Random(seed), receiver, caster, on_sphere)
         else:
             made = scene(seed, args.grazing)
+        done = scene_options.apply(made, seed, options, on_sphere, low=args.grazing or args.sunk)
+        if done:
+            made["description"] += " (" + ", ".join(done) + ")"
         with open(path, "w") as f:
             json.dump(made, f, indent=1)
             f.write("\n")

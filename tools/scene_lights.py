@@ -8,7 +8,6 @@ often as at them, a shadow strength and colour of its own, attenuation per verte
 with a beam) per pixel, and sometimes a slide projector beside them (it lights, casts nothing).
 World space in metres, y up.
 """
-import math
 
 BEAMS = ["round", "square", "gobo", "lens"]
 SLIDES = ["checker", "rings", "grid"]
