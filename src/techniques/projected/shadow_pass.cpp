@@ -5,6 +5,8 @@
 
 #include <glideutl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -52,6 +54,9 @@ void set_shadow_pass_state(FxU32 address, const ShadowTexture &texture,
 //     every later cover on the same surface, at kExactCodes or kClippedCodes, fails).
 // Clipped polygons are drawn first, so an exact triangle after them fails on their seals. Each
 // code more would let the shadow onto a nearer surface within that depth of the receiver.
+// The first shadow to reach a pixel sets its darkening. With filtered edges, every shadow's
+// core is drawn before any edge (core_alpha), so an edge inside another's core is the core's;
+// where two soft edges cross, the first one drawn still decides (a few pixels along the crossing).
 constexpr FxI16 kExactCodes = 1;
 constexpr FxI16 kClippedCodes = 1;
 constexpr FxI16 kSealCodes = kClippedCodes + 2;
@@ -66,6 +71,61 @@ void draw_clipped(const ReceiverCoords &receivers) {
   for (const std::vector<GrVertex> &polygon : receivers.clipped) draw_fan(polygon);
 }
 
+// The screen box (Glide screen, pixels) of what step 5 draws for `receivers`: empty (min above
+// max) when it draws nothing.
+struct ScreenBox {
+  glm::vec2 min{INFINITY}, max{-INFINITY};
+  void add(const GrVertex &v) {
+    min = glm::min(min, glm::vec2(v.x, v.y)), max = glm::max(max, glm::vec2(v.x, v.y));
+  }
+  bool overlaps(const ScreenBox &other) const {
+    return min.x <= other.max.x && other.min.x <= max.x && min.y <= other.max.y &&
+           other.min.y <= max.y;
+  }
+};
+
+ScreenBox drawn_box(const ReceiverCoords &receivers) {
+  ScreenBox box;
+  for (const ShadowTriangle &t : receivers.triangles)
+    if (t.reaches_caster)
+      for (const GrVertex &v : t.v) box.add(v);
+  for (const std::vector<GrVertex> &polygon : receivers.clipped)
+    for (const GrVertex &v : polygon) box.add(v);
+  return box;
+}
+
+// The least alpha (texture alpha x iterated alpha, as the combine unit makes it) that only a
+// pixel sampling fully covered texels gets, when the shadows of `jobs` have soft edges that
+// another's core may hold: bilinear filtering, one iterated alpha for every pixel (the light's
+// strength; distance alpha varies it per pixel), and two jobs whose drawn screen boxes overlap.
+// Covered texels have alpha 255 (ARGB_4444's 15), and the Voodoo's 4-bit bilinear weights give
+// any pixel with an uncovered texel among its four at most 255 x 15/16 = 239; the combine unit
+// gives (texture x (iterated + 1)) >> 8. The threshold is taken halfway, at texture alpha 247.
+std::optional<FxU8> core_alpha(const std::vector<const ShadowJob *> &jobs,
+                               const ProjectedShadowOptions &options) {
+  if (jobs.size() < 2 || !options.bilinear || options.chroma_key ||
+      options.alpha != ShadowAlpha::Constant) {
+    return std::nullopt;
+  }
+  std::optional<float> iterated;
+  std::vector<ScreenBox> boxes;
+  for (const ShadowJob *job : jobs) {
+    boxes.push_back(drawn_box(job->receivers));
+    const ReceiverCoords &receivers = job->receivers;
+    if (!iterated && !receivers.triangles.empty()) iterated = receivers.triangles.front().v[0].a;
+    if (!iterated && !receivers.clipped.empty() && !receivers.clipped.front().empty())
+      iterated = receivers.clipped.front().front().a;
+  }
+  bool overlap = false;
+  for (std::size_t i = 0; i < boxes.size() && !overlap; ++i)
+    for (std::size_t j = i + 1; j < boxes.size() && !overlap; ++j) overlap = boxes[i].overlaps(boxes[j]);
+  if (!overlap || !iterated) return std::nullopt;
+  const int factor = static_cast<int>(std::clamp(*iterated, 0.0f, 255.0f)) + 1;
+  const int threshold = (247 * factor) >> 8, softest_edge = (239 * factor) >> 8;
+  if (threshold <= softest_edge) return std::nullopt;  // too faint to tell a core from an edge
+  return static_cast<FxU8>(threshold);
+}
+
 void restore_scene_state() {
   grChromakeyMode(GR_CHROMAKEY_DISABLE);
   grAlphaTestFunction(GR_CMP_ALWAYS);
@@ -76,8 +136,9 @@ void restore_scene_state() {
 
 void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
                                 const ProjectedShadowOptions &options, const BindShadowTexture &bind) {
-  // Black, at texture alpha x iterated alpha, over the lit scene; marks where alpha > 0.
-  auto darken = [&](const ShadowJob &job) {
+  // Black, at texture alpha x iterated alpha, over the lit scene; marks where the alpha passes
+  // GR_CMP_GEQUAL `least_alpha` (at least 1).
+  auto darken = [&](const ShadowJob &job, FxU8 least_alpha) {
     const std::optional<FxU32> address = bind(job);
     if (!address) return false;
     set_shadow_pass_state(*address, job.texture, options);
@@ -85,28 +146,35 @@ void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
                    GR_COMBINE_LOCAL_NONE, GR_COMBINE_OTHER_TEXTURE, FXFALSE);
     grAlphaBlendFunction(GR_BLEND_SRC_ALPHA, GR_BLEND_ONE_MINUS_SRC_ALPHA, GR_BLEND_ONE,
                          GR_BLEND_ZERO);
-    grAlphaTestFunction(GR_CMP_GREATER);
-    grAlphaTestReferenceValue(0);
+    grAlphaTestFunction(GR_CMP_GEQUAL);
+    grAlphaTestReferenceValue(least_alpha);
     grDepthBufferFunction(GR_CMP_LESS);
     return true;
   };
-  for (const ShadowJob *job : jobs) {
-    if (job->receivers.clipped.empty() || !darken(*job)) continue;
-    grDepthMask(FXFALSE);
-    grDepthBiasLevel(-kClippedCodes);
-    draw_clipped(job->receivers);
-    grColorMask(FXFALSE, FXFALSE);  // the seal: depth only, where the cover darkened
-    grDepthMask(FXTRUE);
-    grDepthBiasLevel(-kSealCodes);
-    draw_clipped(job->receivers);
-    grColorMask(FXTRUE, FXFALSE);
-  }
-  for (const ShadowJob *job : jobs) {
-    if (!darken(*job)) continue;
-    grDepthMask(FXTRUE);
-    grDepthBiasLevel(-kExactCodes);
-    draw_exact(job->receivers);
-  }
+  auto draw_all = [&](FxU8 least_alpha) {
+    for (const ShadowJob *job : jobs) {
+      if (job->receivers.clipped.empty() || !darken(*job, least_alpha)) continue;
+      grDepthMask(FXFALSE);
+      grDepthBiasLevel(-kClippedCodes);
+      draw_clipped(job->receivers);
+      grColorMask(FXFALSE, FXFALSE);  // the seal: depth only, where the cover darkened
+      grDepthMask(FXTRUE);
+      grDepthBiasLevel(-kSealCodes);
+      draw_clipped(job->receivers);
+      grColorMask(FXTRUE, FXFALSE);
+    }
+    for (const ShadowJob *job : jobs) {
+      if (!darken(*job, least_alpha)) continue;
+      grDepthMask(FXTRUE);
+      grDepthBiasLevel(-kExactCodes);
+      draw_exact(job->receivers);
+    }
+  };
+  // The shadows' cores first where their filtered edges could meet another's core: otherwise
+  // the shadow drawn first would darken its edge partly inside the other's core and mark it,
+  // and the core would leave those pixels lighter than the rest of it (a bright seam).
+  if (const std::optional<FxU8> core = core_alpha(jobs, options)) draw_all(*core);
+  draw_all(1);
   grDepthBiasLevel(0);
   restore_scene_state();
 }
