@@ -285,7 +285,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
 // render_projected_shadows restores step 4's depth between lights.
 void render_shadow_pass(const ShadowJob &job, const ProjectedShadowOptions &options);
 // Step 5 for the shadows of one light, in order, each pixel darkened once (shadow_pass.cpp's
-// depth levels). Leaves marks in the depth buffer, a few codes nearer than step 4's surfaces.
+// depth levels); with filtered edges and overlapping shadows, every shadow's core (full texture
+// alpha) before any shadow's soft edge, so an edge inside another's core leaves no lighter seam. Leaves marks in the depth buffer, a few codes nearer than step 4's surfaces.
 // `bind` gives the TMU address of a job's texture, loading it there first if it must (nothing:
 // it could not, and the job is left out).
 using BindShadowTexture = std::function<std::optional<FxU32>(const ShadowJob &)>;
