@@ -28,6 +28,7 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libembree-dev
   clang libclang-rt-14-dev
   libsdl2-dev xvfb xauth xdotool x11-apps
+  python3
 )
 
 install_missing_packages() {
