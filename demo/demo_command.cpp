@@ -66,12 +66,17 @@ int run_demo(const DemoOptions &o) {
     std::fprintf(stderr, "glideshadows demo: %s\n", error.c_str());
     return 1;
   }
-  for (const std::string &w : run.warnings) std::fprintf(stderr, "glideshadows demo: warning: %s\n", w.c_str());
+  for (const std::string &line : demo::warning_summary(run, o.frames)) {
+    std::fprintf(stderr, "glideshadows demo: %s\n", line.c_str());
+  }
   std::printf("glideshadows demo: %d frames %dx%d, technique %s, shadow texture %d, in %s/frame_NNNN.png\n",
               o.frames, settings.width, settings.height, o.choice.name.c_str(), o.shadow_size, o.out_dir.c_str());
   if (o.choice.name.rfind("projected", 0) == 0) {
-    std::printf("shadow texture sides%s: %s\n", o.choice.auto_size ? " (--auto-size, per fighter and frame)" : "",
-                demo::describe_texture_sizes(run.texture_sizes).c_str());
+    const char *how = o.choice.auto_size && o.choice.grow_size ? " (--auto-size and --grow-size, per fighter and frame)"
+                      : o.choice.auto_size                       ? " (--auto-size, per fighter and frame)"
+                      : o.choice.grow_size                       ? " (--grow-size, per fighter and frame)"
+                                                                 : "";
+    std::printf("shadow texture sides%s: %s\n", how, demo::describe_texture_sizes(run.texture_sizes).c_str());
   }
   const std::vector<std::string> table = demo::step_table(run.reports);
   if (!table.empty()) std::printf("\n");
