@@ -101,6 +101,7 @@ Insets render_insets(const Scene &scene, const ProjectedShadowOptions &technique
 
 std::vector<std::string> overlay_lines(const ViewState &state, const FrameReport &report, double fps,
                                        const std::vector<int> &sizes) {
+  // A fighter's texture larger than the size asked for: grown (ProjectedShadowOptions::grow_to_accepted).
   const bool grown = std::any_of(sizes.begin(), sizes.end(), [&](int size) { return size > state.shadow_size; });
   char line[128];
   std::vector<std::string> lines;
@@ -132,8 +133,8 @@ TechniqueOptions options_for(const WindowSettings &settings, const ViewState &st
 }
 
 // The frame's errors (shadows it lacks, FrameReport::errors) under a heading, in the overlay's
-// font (upper case, no quotes or semicolons) and wrapped to `width` screen pixels at scale 2; at most
-// kMissingLines lines, the rest cut short.
+// font (upper case, no quotes or semicolons) and wrapped to `width` screen pixels at scale 2;
+// at most kMissingLines lines, the rest cut short.
 std::vector<std::string> missing_shadow_lines(const std::vector<std::string> &errors, int width) {
   constexpr std::size_t kMissingLines = 8;
   std::vector<std::string> lines;
@@ -307,8 +308,8 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
     }
     if (!state.paused && elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.9 * fps + 0.1 / elapsed;
     if (state.overlay) {
-      draw_text_panel(overlay_lines(state, report, fps, fighter_texture_sizes(scene, options.projected, report.warnings)),
-                      kInsetMargin, kInsetMargin, 2, width, height);
+      const std::vector<int> sizes = fighter_texture_sizes(scene, options.projected, report.warnings);
+      draw_text_panel(overlay_lines(state, report, fps, sizes), kInsetMargin, kInsetMargin, 2, width, height);
     }
     // A shadow the frame should show and does not, said on screen whether the overlay is on or
     // not: the frame is wrong.

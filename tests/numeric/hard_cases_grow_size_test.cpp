@@ -1,8 +1,8 @@
-// ProjectedShadowOptions::grow_to_accepted (--grow-size) on the fight at a frame where the
+// ProjectedShadowOptions::grow_to_accepted (--grow-size) on the fight at frames where the
 // 256-texel shadow of a fighter is refused as too coarse for the screen (the demo's frames 41 and
-// 90, 640x480, 12 frames a second; one fighter in 41, both in 90): with the mode, that fighter's shadow is drawn at the size the
-// refusal names instead and is within the interior-error budget against the ray-cast truth;
-// without it, the refusal is as it was. A shadow no size up to 512 would make fine enough is
+// 90, 640x480, 12 frames a second; one fighter in 41, both in 90): with the mode, the shadow is
+// drawn at the size the refusal names instead and is within the interior-error budget against
+// the ray-cast truth; without it, the refusal is as it was. A shadow no size up to 512 would make fine enough is
 // refused with the mode too, in the same words.
 #include "hard_case_checks.h"
 
