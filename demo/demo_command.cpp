@@ -66,12 +66,17 @@ int run_demo(const DemoOptions &o) {
     std::fprintf(stderr, "glideshadows demo: %s\n", error.c_str());
     return 1;
   }
-  for (const std::string &w : run.warnings) std::fprintf(stderr, "glideshadows demo: warning: %s\n", w.c_str());
+  for (const std::string &line : demo::warning_summary(run, o.frames)) {
+    std::fprintf(stderr, "glideshadows demo: %s\n", line.c_str());
+  }
   std::printf("glideshadows demo: %d frames %dx%d, technique %s, shadow texture %d, in %s/frame_NNNN.png\n",
               o.frames, settings.width, settings.height, o.choice.name.c_str(), o.shadow_size, o.out_dir.c_str());
   if (o.choice.name.rfind("projected", 0) == 0) {
-    std::printf("shadow texture sides%s: %s\n", o.choice.auto_size ? " (--auto-size, per fighter and frame)" : "",
-                demo::describe_texture_sizes(run.texture_sizes).c_str());
+    const char *how = o.choice.auto_size && o.choice.grow_size ? " (--auto-size and --grow-size, per fighter and frame)"
+                      : o.choice.auto_size                       ? " (--auto-size, per fighter and frame)"
+                      : o.choice.grow_size                       ? " (--grow-size, per fighter and frame)"
+                                                                 : "";
+    std::printf("shadow texture sides%s: %s\n", how, demo::describe_texture_sizes(run.texture_sizes).c_str());
   }
   const std::vector<std::string> table = demo::step_table(run.reports);
   if (!table.empty()) std::printf("\n");
@@ -109,6 +114,10 @@ Command add_demo_command(CLI::App &app) {
   demo->add_option("--fps", o->fps, "animation frames per second of fight time")->check(CLI::Range(1, 240))->capture_default_str();
   demo->add_flag("--gif", o->gif, "also write an animated GIF (half size) of the frames");
   demo->add_flag("--contact-sheet", o->sheet, "also write a 4x4 contact sheet of frames from the run");
+  // The demo is for watching: a fighter's shadow refused as too coarse at 256 texels is drawn
+  // at the size the refusal names (--grow-size; 3 textures of the 192 in the 96 frames) rather
+  // than missing. --no-grow-size shows the refusals.
+  o->choice.grow_size = true;
   add_technique_options(*demo, o->choice, o->shadow_size);
   demo->add_option("--beam", o->beam.beam, "give the spotlight a projected beam map: round, square, gobo or lens")
       ->check(CLI::IsMember({"round", "square", "gobo", "lens"}));

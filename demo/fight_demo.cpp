@@ -48,13 +48,48 @@ Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int inde
   return demo_scene_at(fight, settings, static_cast<float>(index) / static_cast<float>(settings.fps));
 }
 
-std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options) {
+std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options,
+                                       const std::vector<std::string> &warnings) {
   std::vector<int> sizes;
   for (std::size_t fighter : FightScene::kFighters) {
     const LightView view = fit_light_view(scene, fighter, 0, options);
-    sizes.push_back(view.usable ? view.size : 0);
+    const int grown = grown_shadow_size(warnings, 0, scene.objects[fighter].name);
+    sizes.push_back(!view.usable ? 0 : grown > 0 ? grown : view.size);
   }
   return sizes;
+}
+
+void count_warnings(const FrameReport &frame, int index, DemoRun &run) {
+  std::vector<std::string> seen;  // this frame's, each counted once
+  for (const std::string &w : frame.warnings) {
+    if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
+    seen.push_back(w);
+    auto counted = std::find_if(run.warnings.begin(), run.warnings.end(),
+                                [&w](const WarningCount &c) { return c.text == w; });
+    if (counted == run.warnings.end()) {
+      const bool error = std::find(frame.errors.begin(), frame.errors.end(), w) != frame.errors.end();
+      counted = run.warnings.insert(run.warnings.end(), WarningCount{w, 0, error});
+    }
+    ++counted->frames;
+  }
+  if (!frame.errors.empty()) run.frames_missing_shadow.push_back(index);
+}
+
+std::vector<std::string> warning_summary(const DemoRun &run, int frames) {
+  constexpr std::size_t kFramesNamed = 12;  // frame numbers listed, the first ones
+  std::string missing = std::to_string(run.frames_missing_shadow.size()) + " of " +
+                        std::to_string(frames) + " frames lack a shadow they should show";
+  for (std::size_t i = 0; i < run.frames_missing_shadow.size() && i < kFramesNamed; ++i) {
+    missing += (i == 0 ? " (frames " : ", ") + std::to_string(run.frames_missing_shadow[i]);
+  }
+  if (run.frames_missing_shadow.size() > kFramesNamed) missing += ", ...";
+  if (!run.frames_missing_shadow.empty()) missing += "; the errors below say why)";
+  std::vector<std::string> lines = {missing};
+  for (const WarningCount &w : run.warnings) {
+    lines.push_back(std::string(w.error ? "error" : "warning") + " in " + std::to_string(w.frames) +
+                    " of " + std::to_string(frames) + " frames: " + w.text);
+  }
+  return lines;
 }
 
 InterFighterShadow measure_inter_fighter_shadow(ShadowTechnique &technique, const Scene &scene) {
@@ -90,10 +125,10 @@ bool render_fight(const DemoSettings &settings, ShadowTechnique &technique, Demo
     const Scene scene = demo_frame_scene(fight, settings, i);
     const FrameReport frame = technique.render(scene, true);
     if (i > 0) run.reports.push_back(frame);
-    for (const std::string &w : frame.warnings) {
-      if (std::find(run.warnings.begin(), run.warnings.end(), w) == run.warnings.end()) run.warnings.push_back(w);
+    count_warnings(frame, i, run);
+    for (int size : fighter_texture_sizes(scene, settings.shadow_options, frame.warnings)) {
+      run.texture_sizes.push_back(size);
     }
-    for (int size : fighter_texture_sizes(scene, settings.shadow_options)) run.texture_sizes.push_back(size);
     grBufferSwap(1);
     const std::string path = media::frame_path(settings.out_dir, i);
     if (!glideShimWritePng(GR_BUFFER_FRONTBUFFER, path.c_str())) {

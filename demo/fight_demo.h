@@ -27,12 +27,21 @@ struct DemoSettings {
   std::string out_dir = "out/demo";
 };
 
+// One of a run's warnings (FrameReport::warnings) and how many frames it was among them.
+struct WarningCount {
+  std::string text;
+  int frames = 0;
+  bool error = false;  // among FrameReport::errors: a shadow the frame should show is missing
+};
+
 struct DemoRun {
   std::vector<std::string> frame_files;  // in order
   std::vector<FrameReport> reports;      // every frame but the first (llvmpipe's compiles)
-  std::vector<std::string> warnings;     // each once
+  std::vector<WarningCount> warnings;    // each once, in the order they first came
+  std::vector<int> frames_missing_shadow;  // the frames (from 0) with an error among them
   std::vector<int> texture_sizes;        // per frame, the red and the blue fighter's shadow
-                                         // texture sides (what --auto-size chose), interleaved
+                                         // texture sides (what --auto-size chose, or what
+                                         // --grow-size drew at), interleaved
 };
 
 // The fight at `time` seconds with the chosen beam; frame `index` of a run is at index / fps.
@@ -40,9 +49,17 @@ Scene demo_scene_at(FightScene &fight, const DemoSettings &settings, float time)
 Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int index);
 
 // The side of each fighter's shadow texture under the first light in `scene`, as the projected
-// technique fits it (with options.auto_size, from the fighter's size on screen); 0 for a fighter
-// the light cannot give a shadow.
-std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options);
+// technique fits it (with options.auto_size, from the fighter's size on screen), or the size a
+// note among `warnings` (the frame's, FrameReport::warnings) says it was grown to
+// (options.grow_to_accepted); 0 for a fighter the light cannot give a shadow.
+std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options,
+                                       const std::vector<std::string> &warnings = {});
+
+// Counts one frame's warnings into `run` (each once per frame).
+void count_warnings(const FrameReport &frame, int index, DemoRun &run);
+// The run's warnings as printed lines, each with the frames it was in, errors marked, after a
+// line saying how many of `frames` lacked a shadow (and which, the first few).
+std::vector<std::string> warning_summary(const DemoRun &run, int frames);
 
 // How much of the frame shows one fighter's shadow on the other: `technique` renders `scene`
 // (in the open window, into the back buffer) and its shadow mask is counted on the pixels where

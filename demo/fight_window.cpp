@@ -29,6 +29,7 @@ constexpr int kShadowSizes[] = {32, 64, 128, 256, 512};
 constexpr int kInsetSide = 150;   // screen pixels of each inset picture
 constexpr int kInsetMargin = 8;
 constexpr int kInsetViewPixels = 160;  // the light's view is rendered this size, then scaled
+constexpr unsigned char kWarningColour[3] = {255, 90, 70};  // the missing-shadow panel's text
 
 // What the keys have changed.
 struct ViewState {
@@ -41,6 +42,7 @@ struct ViewState {
   std::size_t technique = 0;   // index into technique_names()
   int shadow_size = 256;
   bool auto_size = false;
+  bool grow_size = false;      // ProjectedShadowOptions::grow_to_accepted
   bool inset = false, overlay = true, help = false;
 };
 
@@ -99,15 +101,17 @@ Insets render_insets(const Scene &scene, const ProjectedShadowOptions &technique
 
 std::vector<std::string> overlay_lines(const ViewState &state, const FrameReport &report, double fps,
                                        const std::vector<int> &sizes) {
+  // A fighter's texture larger than the size asked for: grown (ProjectedShadowOptions::grow_to_accepted).
+  const bool grown = std::any_of(sizes.begin(), sizes.end(), [&](int size) { return size > state.shadow_size; });
   char line[128];
   std::vector<std::string> lines;
   std::snprintf(line, sizeof line, "%.1f FPS  T %.2f S%s", fps, state.time, state.paused ? "  PAUSED" : "");
   lines.emplace_back(line);
-  std::snprintf(line, sizeof line, "%s  SHADOW %d%s", upper_name(technique_names()[state.technique]).c_str(),
-                state.shadow_size, state.auto_size ? " AUTO" : "");
+  std::snprintf(line, sizeof line, "%s  SHADOW %d%s%s", upper_name(technique_names()[state.technique]).c_str(),
+                state.shadow_size, state.auto_size ? " AUTO" : "", state.grow_size ? " GROW" : "");
   lines.emplace_back(line);
-  if (state.auto_size && sizes.size() == 2) {
-    std::snprintf(line, sizeof line, "AUTO SIZES: RED %d  BLUE %d", sizes[0], sizes[1]);
+  if ((state.auto_size || grown) && sizes.size() == 2) {
+    std::snprintf(line, sizeof line, "SIZES: RED %d  BLUE %d", sizes[0], sizes[1]);
     lines.emplace_back(line);
   }
   for (const auto &[name, ms] : report.steps) {
@@ -124,7 +128,26 @@ TechniqueOptions options_for(const WindowSettings &settings, const ViewState &st
   TechniqueOptions options = settings.options;
   options.projected.size = state.shadow_size;
   options.projected.auto_size = state.auto_size;
+  options.projected.grow_to_accepted = state.grow_size;
   return options;
+}
+
+// The frame's errors (shadows it lacks, FrameReport::errors) under a heading, in the overlay's
+// font (upper case, no quotes or semicolons) and wrapped to `width` screen pixels at scale 2;
+// at most kMissingLines lines, the rest cut short.
+std::vector<std::string> missing_shadow_lines(const std::vector<std::string> &errors, int width) {
+  constexpr std::size_t kMissingLines = 8;
+  std::vector<std::string> lines;
+  if (errors.empty()) return lines;
+  lines.push_back("SHADOW MISSING IN THIS FRAME:");
+  for (const std::string &error : errors) {
+    std::string text = upper_name(error);
+    text.erase(std::remove(text.begin(), text.end(), '\''), text.end());
+    std::replace(text.begin(), text.end(), ';', ',');  // the font has commas, not semicolons
+    for (const std::string &line : wrap_for_panel("- " + text, width, 2)) lines.push_back(line);
+  }
+  if (lines.size() > kMissingLines) lines.resize(kMissingLines), lines.back() += " ...";
+  return lines;
 }
 
 enum class KeyEffect { View, NewTechnique, Quit };
@@ -176,6 +199,10 @@ KeyEffect apply_key(int key, ViewState &state, float frame_seconds, std::FILE *l
       state.auto_size = !state.auto_size;
       effect = KeyEffect::NewTechnique;
       break;
+    case 'g':
+      state.grow_size = !state.grow_size;
+      effect = KeyEffect::NewTechnique;
+      break;
     case 'v':
       state.inset = !state.inset;
       std::fprintf(log, "glideshadows demo: inset %s\n", state.inset ? "on" : "off");
@@ -212,6 +239,7 @@ const std::vector<std::string> &window_key_help() {
       "T SHIFT+T    next / previous technique",
       "+ -          larger / smaller shadow texture",
       "U            shadow size follows the fighters on screen (auto)",
+      "G            a shadow too coarse is drawn larger, not left out (grow)",
       "V            inset: the view from the light and the shadow texture",
       "O            overlay: frames per second and step times",
       "R            reset camera and light",
@@ -228,6 +256,7 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
   state.paused = settings.start_paused;
   state.shadow_size = settings.options.projected.size;
   state.auto_size = settings.options.projected.auto_size;
+  state.grow_size = settings.options.projected.grow_to_accepted;
   const std::vector<std::string> &names = technique_names();
   const auto named = std::find(names.begin(), names.end(), settings.technique);
   state.technique = named == names.end() ? 0 : static_cast<std::size_t>(named - names.begin());
@@ -252,8 +281,8 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
     }
     if (remake) {
       technique = make_technique(names[state.technique], options_for(settings, state), error);
-      std::fprintf(log, "glideshadows demo: technique %s, shadow texture %d%s\n", names[state.technique].c_str(),
-                   state.shadow_size, state.auto_size ? " (auto)" : "");
+      std::fprintf(log, "glideshadows demo: technique %s, shadow texture %d%s%s\n", names[state.technique].c_str(),
+                   state.shadow_size, state.auto_size ? " (auto)" : "", state.grow_size ? " (grow)" : "");
       if (!technique) break;
     }
     std::fflush(log);
@@ -279,8 +308,15 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
     }
     if (!state.paused && elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.9 * fps + 0.1 / elapsed;
     if (state.overlay) {
-      draw_text_panel(overlay_lines(state, report, fps, fighter_texture_sizes(scene, options.projected)), kInsetMargin,
-                      kInsetMargin, 2, width, height);
+      const std::vector<int> sizes = fighter_texture_sizes(scene, options.projected, report.warnings);
+      draw_text_panel(overlay_lines(state, report, fps, sizes), kInsetMargin, kInsetMargin, 2, width, height);
+    }
+    // A shadow the frame should show and does not, said on screen whether the overlay is on or
+    // not: the frame is wrong.
+    const std::vector<std::string> missing = missing_shadow_lines(report.errors, width - 2 * kInsetMargin);
+    if (!missing.empty()) {
+      const int panel_top = height - kInsetMargin - text_panel_height(static_cast<int>(missing.size()), 2);
+      draw_text_panel(missing, kInsetMargin, panel_top, 2, width, height, kWarningColour);
     }
     if (state.help) draw_text_panel(window_key_help(), width / 8, height / 4, 2, width, height);
     grBufferSwap(1);

@@ -62,13 +62,34 @@ Picture alpha_nibble_picture(const Picture &words) {
   return picture;
 }
 
+int text_panel_height(int lines, int scale) { return lines * 7 * scale + 2 * kPanelMargin; }
+
+std::vector<std::string> wrap_for_panel(const std::string &text, int width, int scale,
+                                        const std::string &indent) {
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t start = 0, end = 0; start < text.size(); start = end + 1) {
+    end = std::min(text.find(' ', start), text.size());
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && line != indent && bitmap_text_width(longer, scale) + 2 * kPanelMargin > width) {
+      lines.push_back(line);
+      line = indent + word;
+    } else {
+      line = longer;
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
 void draw_text_panel(const std::vector<std::string> &lines, int x, int y, int scale,
-                     int screen_width, int screen_height) {
+                     int screen_width, int screen_height, const unsigned char *colour) {
   int text_width = 0;
   for (const std::string &line : lines) text_width = std::max(text_width, bitmap_text_width(line, scale));
   const int line_height = 7 * scale;
   const int width = std::min(text_width + 2 * kPanelMargin, screen_width - x);
-  const int height = std::min(static_cast<int>(lines.size()) * line_height + 2 * kPanelMargin, screen_height - y);
+  const int height = std::min(text_panel_height(static_cast<int>(lines.size()), scale), screen_height - y);
   if (width <= 0 || height <= 0) return;
   Picture panel = read_region(x, y, width, height);
   std::vector<unsigned char> rgb(panel.words.size() * 3);
@@ -76,7 +97,8 @@ void draw_text_panel(const std::vector<std::string> &lines, int x, int y, int sc
     to_rgb(panel.words[i], &rgb[3 * i]);
     for (int c = 0; c < 3; ++c) rgb[3 * i + c] = static_cast<unsigned char>(rgb[3 * i + c] / 4);  // darkened
   }
-  const unsigned char colour[3] = {255, 236, 150};
+  const unsigned char pale_yellow[3] = {255, 236, 150};
+  if (colour == nullptr) colour = pale_yellow;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     draw_bitmap_text(rgb, width, height, kPanelMargin, kPanelMargin + static_cast<int>(i) * line_height,
                      lines[i], scale, colour);

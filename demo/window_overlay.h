@@ -24,8 +24,14 @@ void draw_picture(const Picture &picture, int x, int y, int side);
 // it is 1111b, black where 0000b, grey between.
 Picture alpha_nibble_picture(const Picture &words);
 // Lines of text on a darkened panel whose top-left corner is at (x, y); `scale` screen pixels
-// per font pixel. Clipped to the screen.
+// per font pixel, in `colour` (8-bit RGB; null: the overlay's pale yellow). Clipped to the screen.
 void draw_text_panel(const std::vector<std::string> &lines, int x, int y, int scale,
-                     int screen_width, int screen_height);
+                     int screen_width, int screen_height, const unsigned char *colour = nullptr);
+// The height in screen pixels of such a panel of `lines` lines.
+int text_panel_height(int lines, int scale);
+// `text` broken at spaces into lines that, on such a panel, fit `width` screen pixels (a word
+// wider than that gets a line of its own, clipped); lines after the first begin with `indent`.
+std::vector<std::string> wrap_for_panel(const std::string &text, int width, int scale,
+                                        const std::string &indent = "  ");
 
 }  // namespace gs::demo

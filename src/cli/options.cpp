@@ -50,6 +50,13 @@ void add_technique_options(CLI::App &command, TechniqueChoice &choice, int &shad
                    "divide (s,t) per vertex as the article's listing does (default per pixel)");
   command.add_flag("--auto-size", choice.auto_size,
                    "texture size follows the caster's size on screen (the article's LOD idea)");
+  // A pair, so that a command whose default is on (demo: `choice` says so on entry) can be
+  // turned off.
+  command.add_flag("--grow-size,!--no-grow-size", choice.grow_size,
+                   std::string("projected: a shadow refused as too coarse for the screen is drawn at "
+                               "the smallest larger size up to 512 the estimates accept, for that "
+                               "caster and frame (") +
+                       (choice.grow_size ? "on" : "off") + " by default)");
   command.add_option("--alpha", choice.alpha, "iterated alpha: constant (170) or distance")
       ->check(CLI::IsMember({"constant", "distance"}))
       ->capture_default_str();
@@ -85,6 +92,7 @@ TechniqueOptions technique_options(const TechniqueChoice &choice, int shadow_siz
   ProjectedShadowOptions &options = all.projected;
   options.size = shadow_size;
   options.auto_size = choice.auto_size;
+  options.grow_to_accepted = choice.grow_size;
   options.bilinear = !choice.point;
   options.direct_path = choice.direct_path;
   options.chroma_key = choice.name == "projected-chroma";

@@ -15,6 +15,7 @@ namespace gs::cli {
 struct TechniqueChoice {
   std::string name = "projected";
   bool direct_path = false, point = false, affine = false, auto_size = false;
+  bool grow_size = false;  // --grow-size (ProjectedShadowOptions::grow_to_accepted)
   std::string alpha = "constant";
   float bias_slope = 1.0f, bias_units = 4.0f;  // depth-map polygon offset (technique.h)
   float bias_bound = 6.0f;     // depth-map: the slope term's largest push, texels (technique.h)

@@ -1,9 +1,10 @@
 // Step 1's camera: the light's view fitted to one caster (the article's bounding-sphere view, or
 // the caster clipped to the light's beam; a closed caster around the light drawn from both sides,
 // or refused when a receiver reaches inside it), split into 256x256 tiles above a Voodoo 1
-// texture, and the texture size picked from the caster's size on screen. Spaces: world in; light view (the
-// light at the origin looking down -z) and light clip (GL convention) out, as LightView's
-// matrices and caster planes (light view space).
+// texture, and the texture size picked from the caster's size on screen (and the note of one
+// grown to an accepted size, ProjectedShadowOptions::grow_to_accepted). Spaces: world in; light
+// view (the light at the origin looking down -z) and light clip (GL convention) out, as
+// LightView's matrices and caster planes (light view space).
 #include "techniques/projected/projected_shadow.h"
 
 #include "techniques/geometry/light_beam.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -209,6 +211,37 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   }
   view.usable = true;
   return view;
+}
+
+namespace {
+
+// How a refusal ends (texel_footprint_error, shadow_edge_error_message) and what the note puts in
+// its place; the note begins as the refusal does, "light L and 'caster': ".
+constexpr const char *kNoShadowTail = "; it casts no shadow from this light";
+constexpr const char *kGrownWords = "; its shadow is drawn at ";
+constexpr const char *kGrownTail = " texels instead (grow to the accepted size)";
+
+}  // namespace
+
+std::string grown_shadow_note(const std::string &refusal, int size) {
+  const std::string tail = kNoShadowTail;
+  std::string note = refusal;
+  if (note.size() >= tail.size() && note.compare(note.size() - tail.size(), tail.size(), tail) == 0) {
+    note.resize(note.size() - tail.size());
+  }
+  return note + kGrownWords + std::to_string(size) + kGrownTail;
+}
+
+int grown_shadow_size(const std::vector<std::string> &warnings, std::size_t light,
+                      const std::string &caster) {
+  const std::string names = "light " + std::to_string(light) + " and '" + caster + "': ";
+  for (const std::string &warning : warnings) {
+    const std::size_t words = warning.rfind(kGrownWords);
+    if (warning.rfind(names, 0) != 0 || words == std::string::npos) continue;
+    const std::string size = warning.substr(words + std::string(kGrownWords).size());
+    if (size.find(kGrownTail) != std::string::npos) return std::atoi(size.c_str());
+  }
+  return 0;
 }
 
 std::vector<LightView> split_into_textures(const LightView &view) {

@@ -36,6 +36,11 @@ struct ProjectedShadowOptions {
                                // light's shadow_size. Above 256 (a Voodoo 1 texture's limit)
                                // the map is split into 256x256 tiles
   bool auto_size = false;      // pick the size from the caster's size on screen (LOD)
+  // A caster's shadow refused as too coarse for the screen (its texel footprint or the error
+  // along its edges, below) is fitted and drawn again at the smallest larger size up to 512
+  // that the estimates accept, for that caster in that frame: a note, not an error. Checked
+  // again at that size; when no size is accepted, the refusal stands.
+  bool grow_to_accepted = false;
   bool bilinear = true;
   bool direct_path = false;    // step 1 renders straight into texture memory (no LFB read)
   bool chroma_key = false;     // the article's Figure 15 alternative to the alpha mask
@@ -177,6 +182,13 @@ inline GrLOD_t shadow_lod(int size) {
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
                          const ProjectedShadowOptions &options);
 std::vector<LightView> split_into_textures(const LightView &view);
+// ProjectedShadowOptions::grow_to_accepted's note (a warning, not an error): `refusal`, the
+// first size's, with its shadow drawn at `size` texels instead of none. And the size such a
+// note in a frame's warnings says the shadow of `caster` (by name) from `light` was drawn at;
+// 0 when none says so.
+std::string grown_shadow_note(const std::string &refusal, int size);
+int grown_shadow_size(const std::vector<std::string> &warnings, std::size_t light,
+                      const std::string &caster);
 // A non-planar receiver the caster reaches through (pierced_receivers.h): step 1 draws the
 // caster only where it is nearer the light than the receiver's light-facing surface, and marks
 // the caster's triangles that pass through that surface (caster_crossing, per caster_mesh
@@ -301,7 +313,8 @@ struct ShadowFrame {
   std::vector<std::string> warnings;  // what the user should know, `errors` included
   std::vector<std::string> errors;    // casters left without a shadow they should cast, and why
   // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
-  // every caster and light, cast or refused: what largest_texel_footprint_px bounds.
+  // every caster and light, cast or refused (at the size cast: an attempt grown past,
+  // grow_to_accepted, is not counted): what largest_texel_footprint_px bounds.
   float texel_footprint_px = 0.0f;
   // Where step 2 placed the jobs' textures in TMU0 memory (ShadowTexture::id). When they did not
   // all fit, or the slide textures took the memory of one, step 5 loaded textures
