@@ -111,6 +111,8 @@ int main(int argc, char **argv) {
   gs::FightScene fight(640, 480, 256);
   gs::ProjectedShadowOptions lfb, direct;
   direct.direct_path = true;
+  // As the demo draws them: a shadow refused as too coarse is drawn at the size it names.
+  lfb.grow_to_accepted = direct.grow_to_accepted = true;
 
   enum Mode { kNone, kLfb, kDirect };
   if (only >= 0) {  // one mode, untimed, for a profiler
