@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -106,18 +107,32 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
   // can have its texture's edge stray onto it (issue 14: a floating wall's shadow running off a
   // side of the screen, wrong pixels that no true edge on the screen excuses). A shadow edge is
   // followed past them as far as a stray can reach back (`reach`, screen pixels).
-  std::vector<bool> screen_side(polygon.size(), false);
-  float reach = 0.0f;
-  bool clipped_by_screen = false;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
+  // Bit i: side i (polygon[i] to polygon[i + 1]) lies along the screen's side (sides past the
+  // 64th, which clipping never makes, are taken as the receiver's border).
+  std::uint64_t screen_sides = 0;
+  for (std::size_t i = 0; i < polygon.size() && i < 64; ++i) {
     const glm::vec3 &p = polygon[i].world, &q = polygon[(i + 1) % polygon.size()].world;
-    screen_side[i] = along_screen_side(space, p, q);
-    if (!screen_side[i]) continue;
-    clipped_by_screen = true;
-    for (const glm::vec3 &corner : {p, q}) {
-      reach = std::max(reach, stray_reach_pixels(space, plane, texel_of(space, corner)));
-    }
+    if (along_screen_side(space, p, q)) screen_sides |= std::uint64_t{1} << i;
   }
+  // The reach at the polygon's corners on those sides, found when an edge first needs it.
+  float reach = -1.0f;
+  auto corner_reach = [&] {
+    if (reach >= 0.0f) return reach;
+    reach = 0.0f;
+    for (std::size_t i = 0; i < polygon.size() && i < 64; ++i) {
+      if (!(screen_sides >> i & 1u)) continue;
+      for (const glm::vec3 &corner : {polygon[i].world, polygon[(i + 1) % polygon.size()].world}) {
+        reach = std::max(reach, stray_reach_pixels(space, plane, texel_of(space, corner)));
+      }
+    }
+    return reach;
+  };
+  // Strictly inside the screen and before the camera's near plane (camera clip space).
+  auto well_inside = [&](const glm::vec3 &world) {
+    const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
+    return c.w > 0.0f && c.z >= -c.w && std::abs(c.x) < c.w && std::abs(c.y) < c.w;
+  };
+  const bool clipped_by_screen = screen_sides != 0;
   const glm::vec2 half_screen = 0.5f * space.pixels;
   for (std::size_t index : candidates) {
     const SilhouetteSegment &segment = segments[index];
@@ -150,7 +165,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     from = 0.0f, to = 1.0f;
     float share = 1.0f;
     for (std::size_t i = 0; i < polygon.size() && from < to; ++i) {
-      if (screen_side[i]) continue;
+      if (i < 64 && (screen_sides >> i & 1u)) continue;
       const glm::vec3 &p = polygon[i].world, &q = polygon[(i + 1) % polygon.size()].world;
       const glm::vec3 inward = winding * glm::cross(normal, q - p);
       const float at_start = glm::dot(inward, shadow_ends[0] - p);
@@ -159,11 +174,13 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       if (std::abs(at_start) <= on_side && std::abs(at_end) <= on_side) share = 0.5f;
       keep_non_negative(at_start, at_end, from, to);
     }
-    if (clipped_by_screen) {
+    if (clipped_by_screen && from < to &&
+        !(well_inside(glm::mix(shadow_ends[0], shadow_ends[1], from)) &&
+          well_inside(glm::mix(shadow_ends[0], shadow_ends[1], to)))) {
       // Within the reach of the polygon's corners, then of the edge's own ends there (its
       // texels grow along it, away from the light).
       float near_from = from, near_to = to;
-      keep_near_screen(space, shadow_ends[0], shadow_ends[1], reach, near_from, near_to);
+      keep_near_screen(space, shadow_ends[0], shadow_ends[1], corner_reach(), near_from, near_to);
       if (near_from < near_to) {
         float end_reach = reach;
         for (float f : {near_from, near_to}) {
