@@ -2,9 +2,11 @@
 // edge thrown from the light onto a receiver polygon's plane (world space), clipped to the
 // polygon, measured on screen (pixels) and against the texture (texels) where it lands.
 #include "techniques/texel_error/shadow_edge_error.h"
+#include "techniques/texel_error/stray_on_screen.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -28,18 +30,6 @@ float edge_pixels_per_texel(const FootprintSpace &space, const glm::vec3 &p, con
   if (!(along_screen > 1e-12f)) return 0.0f;  // the edge seen end-on: no length to stray along
   return std::min(std::abs(glm::determinant(pixels)) * glm::length(texels * u) /
                       (texel_area * along_screen), 1e6f);
-}
-
-// Narrows [from, to] (parameters along a segment) to where a linear function with values
-// `at_from_end` at 0 and `at_to_end` at 1 is at least 0.
-void keep_non_negative(float at_from_end, float at_to_end, float &from, float &to) {
-  if (at_from_end < 0.0f && at_to_end < 0.0f) {
-    from = 1.0f, to = 0.0f;
-  } else if (at_from_end < 0.0f) {
-    from = std::max(from, at_from_end / (at_from_end - at_to_end));
-  } else if (at_to_end < 0.0f) {
-    to = std::min(to, at_from_end / (at_from_end - at_to_end));
-  }
 }
 
 // Light screen texels (x right, y down, texel centres at i + 0.5) of a world point before the
@@ -85,45 +75,6 @@ float texture_edge_offset(const glm::vec2 &on_edge, const glm::vec2 &away, EdgeL
   return 0.5f * (inside + outside);
 }
 
-// The receiver plane through `origin` (world) with unit tangents t1, t2, seen from the light: a
-// point of the light's texture (texels, x right, y down) back on the plane and on to the screen
-// (pixels, footprint_screen_pixels). The light's projection restricted to the plane is a
-// homography, inverted once per plane, so a texture edge strayed from the true one lands where
-// the texels' own stretch puts it: farther from the light a texel spans more of a grazed plane
-// than the Jacobian at the true edge says (issue 14: a wall's shadow thrown 7 m along a floor
-// from a light 1 m up, tests/hard_cases/audit/ne1).
-struct PlaneFromTexture {
-  glm::mat3 plane_from_ndc{1.0f};  // light NDC (x, y, 1) to plane (a, b, 1), up to scale
-  glm::vec3 origin{0.0f}, t1{0.0f}, t2{0.0f};
-  bool usable = false;
-
-  PlaneFromTexture(const FootprintSpace &space, const glm::vec3 &origin_, const glm::vec3 &t1_,
-                   const glm::vec3 &t2_)
-      : origin(origin_), t1(t1_), t2(t2_) {
-    auto xyw = [&](const glm::vec4 &v) {
-      const glm::vec4 c = space.light_clip * v;
-      return glm::vec3(c.x, c.y, c.w);
-    };
-    const glm::mat3 ndc_from_plane(xyw(glm::vec4(t1, 0.0f)), xyw(glm::vec4(t2, 0.0f)),
-                                   xyw(glm::vec4(origin, 1.0f)));
-    usable = std::abs(glm::determinant(ndc_from_plane)) > 1e-12f;
-    if (usable) plane_from_ndc = glm::inverse(ndc_from_plane);
-  }
-  // False where the texel's ray from the light misses the plane before it, or the point is
-  // behind the camera: no screen position.
-  bool screen_of(const FootprintSpace &space, const glm::vec2 &texel, glm::vec2 &screen) const {
-    if (!usable) return false;
-    const glm::vec2 ndc(texel.x / space.texels * 2.0f - 1.0f, 1.0f - texel.y / space.texels * 2.0f);
-    const glm::vec3 abw = plane_from_ndc * glm::vec3(ndc, 1.0f);
-    if (!(abw.z > 0.0f)) return false;  // the light's w there, inverted: the plane behind it
-    const glm::vec3 world = origin + (abw.x / abw.z) * t1 + (abw.y / abw.z) * t2;
-    const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
-    if (!(c.w > 0.0f)) return false;
-    screen = footprint_screen_pixels(space, world);
-    return true;
-  }
-};
-
 }  // namespace
 
 void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
@@ -151,6 +102,38 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
   constexpr float kContactShare = 1e-3f;
   // The texture's edge strays less than this many texels from a straight edge.
   constexpr float kMostStrayTexels = 0.75f;
+  // The polygon's sides along the screen's sides, where texel_footprint clipped it to what the
+  // screen shows: the receiver goes on beyond them, and a true shadow edge off the screen there
+  // can have its texture's edge stray onto it (issue 14: a floating wall's shadow running off a
+  // side of the screen, wrong pixels that no true edge on the screen excuses). A shadow edge is
+  // followed past them as far as a stray can reach back (`reach`, screen pixels).
+  // Bit i: side i (polygon[i] to polygon[i + 1]) lies along the screen's side (sides past the
+  // 64th, which clipping never makes, are taken as the receiver's border).
+  std::uint64_t screen_sides = 0;
+  for (std::size_t i = 0; i < polygon.size() && i < 64; ++i) {
+    const glm::vec3 &p = polygon[i].world, &q = polygon[(i + 1) % polygon.size()].world;
+    if (along_screen_side(space, p, q)) screen_sides |= std::uint64_t{1} << i;
+  }
+  // The reach at the polygon's corners on those sides, found when an edge first needs it.
+  float reach = -1.0f;
+  auto corner_reach = [&] {
+    if (reach >= 0.0f) return reach;
+    reach = 0.0f;
+    for (std::size_t i = 0; i < polygon.size() && i < 64; ++i) {
+      if (!(screen_sides >> i & 1u)) continue;
+      for (const glm::vec3 &corner : {polygon[i].world, polygon[(i + 1) % polygon.size()].world}) {
+        reach = std::max(reach, stray_reach_pixels(space, plane, texel_of(space, corner)));
+      }
+    }
+    return reach;
+  };
+  // Strictly inside the screen and before the camera's near plane (camera clip space).
+  auto well_inside = [&](const glm::vec3 &world) {
+    const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
+    return c.w > 0.0f && c.z >= -c.w && std::abs(c.x) < c.w && std::abs(c.y) < c.w;
+  };
+  const bool clipped_by_screen = screen_sides != 0;
+  const glm::vec2 half_screen = 0.5f * space.pixels;
   for (std::size_t index : candidates) {
     const SilhouetteSegment &segment = segments[index];
     const float height_a = glm::dot(normal, segment.a - origin);
@@ -182,6 +165,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     from = 0.0f, to = 1.0f;
     float share = 1.0f;
     for (std::size_t i = 0; i < polygon.size() && from < to; ++i) {
+      if (i < 64 && (screen_sides >> i & 1u)) continue;
       const glm::vec3 &p = polygon[i].world, &q = polygon[(i + 1) % polygon.size()].world;
       const glm::vec3 inward = winding * glm::cross(normal, q - p);
       const float at_start = glm::dot(inward, shadow_ends[0] - p);
@@ -189,6 +173,24 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const float on_side = 1e-4f * glm::dot(q - p, q - p);  // |inward| x 1e-4 |q - p|
       if (std::abs(at_start) <= on_side && std::abs(at_end) <= on_side) share = 0.5f;
       keep_non_negative(at_start, at_end, from, to);
+    }
+    if (clipped_by_screen && from < to &&
+        !(well_inside(glm::mix(shadow_ends[0], shadow_ends[1], from)) &&
+          well_inside(glm::mix(shadow_ends[0], shadow_ends[1], to)))) {
+      // Within the reach of the polygon's corners, then of the edge's own ends there (its
+      // texels grow along it, away from the light).
+      float near_from = from, near_to = to;
+      keep_near_screen(space, shadow_ends[0], shadow_ends[1], corner_reach(), near_from, near_to);
+      if (near_from < near_to) {
+        float end_reach = reach;
+        for (float f : {near_from, near_to}) {
+          const glm::vec3 point = glm::mix(shadow_ends[0], shadow_ends[1], f);
+          end_reach = std::max(end_reach, stray_reach_pixels(space, plane, texel_of(space, point)));
+        }
+        keep_near_screen(space, shadow_ends[0], shadow_ends[1], end_reach, from, to);
+      } else {
+        from = near_from, to = near_to;
+      }
     }
     if (!(from < to)) continue;
     const glm::vec3 start = glm::mix(shadow_ends[0], shadow_ends[1], from);
@@ -203,8 +205,14 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     }
     // A visible true edge's band excuses the pixels next to it.
     const bool banded = !contact || beyond;
-    const glm::vec2 screen_along =
-        footprint_screen_pixels(space, end) - footprint_screen_pixels(space, start);
+    const glm::vec2 start_screen = footprint_screen_pixels(space, start);
+    const glm::vec2 screen_along = footprint_screen_pixels(space, end) - start_screen;
+    auto on_screen = [&](const glm::vec2 &p) {  // a hundredth of a pixel for rounding
+      return std::abs(p.x) <= half_screen.x + 0.01f && std::abs(p.y) <= half_screen.y + 0.01f;
+    };
+    // All of the edge on the screen (so where the polygon is): every point of it has a band.
+    const bool all_seen = !clipped_by_screen ||
+                          (on_screen(start_screen) && on_screen(start_screen + screen_along));
     const float length = glm::length(screen_along);
     // How far from a visible true edge a wrong pixel is not interior error (src/measure/
     // metrics.cpp): a pixel with a 4-neighbour across the edge is its boundary, up to
@@ -232,10 +240,14 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (banded && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
+    if (banded && all_seen && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
-    // along a straight edge).
-    const int samples = std::clamp(static_cast<int>(std::ceil(2.0f * glm::length(texel_along))), 1, 64);
+    // along a straight edge); where the screen's side cuts the strays short, every other pixel
+    // too, at most 256.
+    const int texel_samples = static_cast<int>(std::ceil(2.0f * glm::length(texel_along)));
+    const int pixel_samples = static_cast<int>(std::ceil(0.5f * length));
+    const int samples = all_seen ? std::clamp(texel_samples, 1, 64)
+                                 : std::clamp(std::max(texel_samples, pixel_samples), 1, 256);
     const float sample_length = share * length / static_cast<float>(samples);
     for (int k = 0; k < samples; ++k) {
       const float f = (static_cast<float>(k) + 0.5f) / static_cast<float>(samples);
@@ -243,26 +255,30 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const glm::vec2 on_edge = texel_of(space, point);
       const glm::vec2 point_screen = footprint_screen_pixels(space, point);
       const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
+      // The true edge here on the screen: its band there excuses the pixels next to it.
+      const bool point_seen = all_seen || on_screen(point_screen);
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
         const float per_texel = pixels_per_texel / scale;
-        if (banded && per_texel * kMostStrayTexels <= excused_pixels) break;
+        if (banded && point_seen && per_texel * kMostStrayTexels <= excused_pixels) break;
         const float offset = texture_edge_offset(on_edge * scale, away, lookup);  // texels
-        // Screen pixels from the true edge to the texture's, across the edge: where the strayed
-        // point lands on the plane (the texels' stretch on either side of the edge), or the
-        // Jacobian's estimate where it has no screen position.
+        // Screen pixels from the true edge to the texture's, across the edge, as far as the
+        // screen shows them: where the strayed point lands on the plane (the texels' stretch on
+        // either side of the edge), or the Jacobian's estimate where it has no screen position.
         glm::vec2 strayed_screen;
-        const float stray_pixels =
-            plane.screen_of(space, on_edge + offset / scale * away, strayed_screen)
-                ? std::min(std::abs(screen_normal.x * (strayed_screen.x - point_screen.x) +
-                                    screen_normal.y * (strayed_screen.y - point_screen.y)),
-                           1e6f)
-                : std::abs(offset) * per_texel;
+        float stray_pixels = 0.0f;
+        if (plane.screen_of(space, on_edge + offset / scale * away, strayed_screen)) {
+          const glm::vec2 shown = on_screen_part(half_screen, point_screen, strayed_screen);
+          const float strayed_across = std::abs(glm::dot(screen_normal, strayed_screen - point_screen));
+          stray_pixels = std::min(strayed_across, 1e6f) * std::max(shown.y - shown.x, 0.0f);
+        } else if (point_seen) {
+          stray_pixels = std::abs(offset) * per_texel;
+        }
         // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
-        // caster); beside a hidden one, what leaves the caster.
+        // caster); beside a hidden one, what leaves the caster. Off the screen, no band.
         const float seen = !beyond || offset < 0.0f ? stray_pixels : 0.0f;
-        const float stray = banded ? std::max(seen - excused_pixels, 0.0f)
+        const float stray = banded ? std::max(seen - (point_seen ? excused_pixels : 0.0f), 0.0f)
                                    : (offset > 0.0f ? stray_pixels : 0.0f);
         estimate.pixels[size] += sample_length * stray;
       }

@@ -70,7 +70,10 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // centres the caster covers next to it, and its distance from the true edge measured across
 // the edge on the screen, where the light's projection puts it on the plane (not through the
 // projection's derivative at the true edge, which a grazed plane's texels outgrow within a
-// texel).
+// texel). Only what the screen shows counts: a side of `polygon` along the screen's side (where
+// the caller clipped it to the screen) is no border of the receiver, so a shadow edge is followed
+// past it as far as its texture's edge can stray back onto the screen, and no band excuses the
+// pixels next to the part of a true edge off the screen (stray_on_screen.h).
 // A shadow edge where the caster touches the receiver lies under the caster, where no true
 // edge is seen to excuse the pixel next to it: there every pixel the texture's edge strays out
 // from under the caster counts where the camera (world) sees past the caster's lit face. Seen
