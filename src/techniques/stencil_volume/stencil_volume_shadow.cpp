@@ -106,6 +106,7 @@ void prepare_casters(const Scene &scene, FrameData &frame) {
     for (const glm::vec3 &p : caster.mesh.positions) {
       caster.world.emplace_back(object.model_to_world * glm::vec4(p, 1.0f));
     }
+    caster.inside_seen = stencil_volume::interior_may_be_seen(scene, caster_bounds(object));
     frame.casters.push_back(std::move(caster));
   }
 }
