@@ -1,5 +1,6 @@
 // Stencil shadow volumes, the geometry: the volumes extruded from the casters' silhouettes
-// (edge_mesh.h finds them), and the test that picks z-fail. Spaces: world (the light, the
+// (edge_mesh.h finds them), the test that picks z-fail and the one whether the camera may see
+// inside a caster. Spaces: world (the light, the
 // casters' world positions, the bounding spheres); homogeneous world relative to the camera's
 // position, w = 0 at infinity (the volumes).
 #include "techniques/stencil_volume/stencil_volume_geometry.h"
@@ -71,11 +72,13 @@ void build_volumes(const std::vector<Caster> &casters, const glm::vec3 &light,
     // surface, and wherever the drawn surface is not exactly that mesh - a simplified
     // shadow_mesh, or depths rounded differently - the lit surface would land inside its own
     // volume and be counted in shadow. The dark side is never lit, whatever the count says.)
-    // What lies inside the caster is then outside its volume, though the light reaches it only
-    // through the caster's lit side: where the camera may see inside (from within, or through
-    // the near plane), the near cap is the light-facing triangles instead, and the volume holds
-    // the caster's inside too. Not when the caster surrounds the light: then nothing faces it,
-    // and the inside is lit.
+    // Such a volume counts, at a point, the times the segment from the light leaves the caster
+    // (crosses a triangle facing away), so what lies inside the caster is outside it, though
+    // the light reaches it only through the caster's lit side. Where the camera may see inside
+    // (from within, or through the near plane), the near cap is the light-facing triangles
+    // instead: the volume counts the times the segment enters the caster, and holds its inside
+    // too. Not when the caster surrounds the light: the segment leaves before it enters, and
+    // counting the exits is right, inside lit and beyond dark.
     const bool holds_inside =
         caster.inside_seen && !mesh_surrounds(caster.world, caster.mesh.triangles, light);
     for (std::size_t t = 0; t < caster.mesh.triangles.size(); ++t) {
