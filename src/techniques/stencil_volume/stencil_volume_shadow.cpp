@@ -106,6 +106,7 @@ void prepare_casters(const Scene &scene, FrameData &frame) {
     for (const glm::vec3 &p : caster.mesh.positions) {
       caster.world.emplace_back(object.model_to_world * glm::vec4(p, 1.0f));
     }
+    caster.inside_seen = stencil_volume::interior_may_be_seen(scene, caster_bounds(object));
     frame.casters.push_back(std::move(caster));
   }
 }
@@ -116,7 +117,9 @@ void count_volumes(const GlApi &gl, const std::vector<glm::vec4> &volumes, bool 
   gl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   gl.glDepthMask(GL_FALSE);
   // LESS, so z-fail's near cap on the caster's own dark side (same vertices, same depth) fails
-  // and counts that surface in the volume: it faces away from the light, unlit either way.
+  // and counts that surface in the volume: it faces away from the light, unlit either way. A
+  // near cap on the lit side (a caster the camera may see inside) fails the same way and leaves
+  // that surface in front of the volume, lit.
   gl.glDepthFunc(GL_LESS);
   gl.glDisable(GL_CULL_FACE);
   gl.glEnable(GL_STENCIL_TEST);
@@ -311,8 +314,9 @@ class StencilVolumeShadow final : public ShadowTechnique {
   // Step 3: this light's direct term added where the stencil count is 0 (and, on objects that
   // receive no shadow, everywhere). Casters shadow their own far sides and whatever of
   // themselves lies in their volume, which is physically right; their lit faces lie in front of
-  // their volume, which starts at the dark side (build_volumes). A caster drawn from a
-  // simplified shadow_mesh is not its volume's exact surface, so a few pixels near its
+  // their volume, which starts at the dark side (build_volumes), or on the lit faces themselves
+  // for a caster the camera may see inside (count_volumes counts them behind). A caster drawn
+  // from a simplified shadow_mesh is not its volume's exact surface, so a few pixels near its
   // silhouette may darken.
   // A beam map or slide, and exact attenuation, are applied per pixel by texture units 2 and 3
   // (gl_light_units.h); the vertex colours carry the rest of the light.
