@@ -28,7 +28,8 @@ const std::vector<std::string> kFlatCasterOthers = {"planar", "depth-map", "sten
 // Both projected techniques served right on the scene of `file`, the others right or refusing.
 void expect_flat_caster_served(const std::string &file) {
   expect_projected_right(file);
-  expect_these_right_or_refused(file, hard_cases::load(file), kFlatCasterOthers, kFlatCasterRefusals, true);
+  expect_these_right_or_refused(file, hard_cases::load(file), kFlatCasterOthers,
+                                kFlatCasterRefusals, true);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // Which receivers a caster reaches through, from the light's side (world space): each
 // receiver's plane from its largest triangle, its vertices checked against it, the caster's
 // world vertices checked beyond it; a receiver that is not planar is left to pierced_surface
-// (pierced_surfaces.cpp), but for a flat caster, whose own plane (found the same way) step 3
-// clips the receivers to.
+// (pierced_surfaces.cpp), but for a flat caster (planar_caster), whose own plane step 3 clips
+// the receivers to.
 #include "techniques/projected/pierced_receivers.h"
 
 #include <algorithm>
@@ -14,15 +14,14 @@
 namespace gs {
 namespace {
 
-// The plane (world space, unit normal, the light on its positive side) of `world` (an object's
-// vertices, world space, and its `triangles`) if all of them lie in it; false otherwise, or if
-// the light is in the plane.
-bool plane_of(const std::vector<glm::vec3> &world, const std::vector<glm::uvec3> &triangles,
-              const glm::vec3 &light, glm::vec4 &plane) {
+// The plane of a receiver (world space, unit normal, the light on its positive side) if all its
+// vertices lie in it; false otherwise, or if the light is in the plane.
+bool planar_receiver(const ProjectedObject &receiver, const glm::vec3 &light, glm::vec4 &plane) {
+  const std::vector<glm::vec3> &world = receiver.world;
   if (world.size() < 3) return false;
   glm::vec3 normal(0.0f);
   float largest = 0.0f;
-  for (const glm::uvec3 &t : triangles) {
+  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     const glm::vec3 n = glm::cross(world[t.y] - world[t.x], world[t.z] - world[t.x]);
     const float area = glm::length(n);
     if (area > largest) largest = area, normal = n / area;
@@ -41,24 +40,45 @@ bool plane_of(const std::vector<glm::vec3> &world, const std::vector<glm::uvec3>
   return true;
 }
 
-// The caster's vertices (caster_mesh, step 1's) in world space.
-std::vector<glm::vec3> caster_world_positions(const SceneObject &object) {
-  const Mesh &mesh = caster_mesh(object);
-  std::vector<glm::vec3> world(mesh.positions.size());
-  for (std::size_t i = 0; i < world.size(); ++i) {
-    world[i] = glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
-  }
-  return world;
-}
-
 }  // namespace
 
 std::optional<glm::vec4> planar_caster(const SceneObject &caster, const glm::vec3 &light_position) {
-  glm::vec4 plane;
-  if (!plane_of(caster_world_positions(caster), caster_mesh(caster).triangles, light_position, plane)) {
-    return std::nullopt;
+  // Cheap for a caster that is not flat (a fighter's 1,500 triangles, every frame): the plane
+  // of its first triangle with an area, and the vertices put in the world and checked against
+  // it one at a time, so such a caster leaves at its first vertex off the plane.
+  const Mesh &mesh = caster_mesh(caster);
+  if (mesh.positions.size() < 3) return std::nullopt;
+  auto world = [&](const glm::vec3 &model) {
+    return glm::vec3(caster.model_to_world * glm::vec4(model, 1.0f));
+  };
+  // The caster's extent (world): the diagonal of the box around its model box's corners.
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (const glm::vec3 &p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  glm::vec3 world_low(INFINITY), world_high(-INFINITY);
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner =
+        world({k & 1 ? high.x : low.x, k & 2 ? high.y : low.y, k & 4 ? high.z : low.z});
+    world_low = glm::min(world_low, corner), world_high = glm::max(world_high, corner);
   }
-  return plane;
+  const float tolerance = 1e-5f * glm::length(world_high - world_low);
+  glm::vec3 normal(0.0f), point(0.0f);  // world, unit
+  for (const glm::uvec3 &t : mesh.triangles) {
+    const glm::vec3 a = world(mesh.positions[t.x]);
+    const glm::vec3 n = glm::cross(world(mesh.positions[t.y]) - a, world(mesh.positions[t.z]) - a);
+    const float area = glm::length(n);
+    if (area > 0.0f) {
+      normal = n / area, point = a;
+      break;
+    }
+  }
+  if (normal == glm::vec3(0.0f)) return std::nullopt;
+  const float offset = -glm::dot(normal, point);
+  for (const glm::vec3 &p : mesh.positions) {
+    if (!(std::abs(glm::dot(normal, world(p)) + offset) <= tolerance)) return std::nullopt;
+  }
+  const float light_side = glm::dot(normal, light_position) + offset;
+  if (!(std::abs(light_side) > tolerance)) return std::nullopt;
+  return light_side > 0.0f ? glm::vec4(normal, offset) : -glm::vec4(normal, offset);
 }
 
 std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGeometry &frame,
@@ -67,22 +87,23 @@ std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGe
   std::vector<PiercedReceiver> pierced;
   const SceneObject &object = scene.objects[caster];
   const Mesh &mesh = caster_mesh(object);
-  const std::vector<glm::vec3> caster_world = caster_world_positions(object);
+  std::vector<glm::vec3> caster_world(mesh.positions.size());
   glm::vec3 low(INFINITY), high(-INFINITY);
-  for (const glm::vec3 &p : caster_world) low = glm::min(low, p), high = glm::max(high, p);
+  for (std::size_t i = 0; i < caster_world.size(); ++i) {
+    caster_world[i] = glm::vec3(object.model_to_world * glm::vec4(mesh.positions[i], 1.0f));
+    low = glm::min(low, caster_world[i]), high = glm::max(high, caster_world[i]);
+  }
   if (caster_world.empty()) return pierced;
   // A flat caster shadows nothing on the light's side of its plane, and step 3 clips every
   // receiver to the far side (compute_receiver_coords): the clip is the cut through a receiver
   // that is not planar, exact to the pixel, where a mask by the receiver's surface holds it only
   // to a texel (issue 14: a plate through a cylinder, seen close).
-  glm::vec4 caster_plane;
-  const bool flat = plane_of(caster_world, mesh.triangles, light_position, caster_plane);
+  const bool flat = planar_caster(object, light_position).has_value();
   const float tolerance = 1e-4f * glm::length(high - low);
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     if (r == caster || !scene.objects[r].receives_shadow) continue;
     glm::vec4 plane;
-    if (!plane_of(frame.objects[r].world, frame.objects[r].object->mesh.triangles, light_position,
-                  plane)) {
+    if (!planar_receiver(frame.objects[r], light_position, plane)) {
       if (flat) continue;
       PiercedReceiver surface;
       surface.receiver = r;

@@ -40,10 +40,11 @@ struct PiercedReceiver {
 };
 
 // The plane of a flat caster (world space, unit normal, positive on the light's side): all the
-// vertices of its caster_mesh in one plane (within 1e-5 of their extent) with the light at
-// `light_position` (world) off it. Nothing on the light's side of that plane is in its shadow,
-// so step 3 clips its receivers to the far side (compute_receiver_coords) and no receiver's
-// surface masks its texture (pierced_receivers, receiver_layers).
+// vertices of its caster_mesh within 1e-5 of its extent (the world box around its model box) of
+// the plane of its first triangle with an area, the light at `light_position` (world) off it.
+// Nothing on the light's side of that plane is in its shadow, so step 3 clips its receivers to
+// the far side (compute_receiver_coords) and no receiver's surface masks its texture
+// (pierced_receivers, receiver_layers).
 std::optional<glm::vec4> planar_caster(const SceneObject &caster, const glm::vec3 &light_position);
 
 // The receivers of `caster`'s shadow from the light at `light_position` (world) that it reaches
