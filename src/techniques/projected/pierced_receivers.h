@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace gs {
@@ -38,11 +39,20 @@ struct PiercedReceiver {
   std::vector<ContactSegment> contacts;
 };
 
+// The plane of a flat caster (world space, unit normal, positive on the light's side): all the
+// vertices of its caster_mesh within 1e-5 of its extent (the world box around its model box) of
+// the plane of its first triangle with an area, the light at `light_position` (world) off it.
+// Nothing on the light's side of that plane is in its shadow, so step 3 clips its receivers to
+// the far side (compute_receiver_coords) and no receiver's surface masks its texture
+// (pierced_receivers, receiver_layers).
+std::optional<glm::vec4> planar_caster(const SceneObject &caster, const glm::vec3 &light_position);
+
 // The receivers of `caster`'s shadow from the light at `light_position` (world) that it reaches
 // through. Planar ones: all their vertices in one plane (within 1e-5 of their extent) with the
 // light off it, and a vertex of the caster on the far side of that plane from the light by more
 // than 1e-4 of the caster's size. The others: the caster's surface and theirs pass through each
-// other (an edge of one through a triangle of the other, its ends more than that on either side).
+// other (an edge of one through a triangle of the other, its ends more than that on either side);
+// none for a flat caster (planar_caster), whose plane step 3 clips them to instead.
 std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGeometry &frame,
                                                std::size_t caster,
                                                const glm::vec3 &light_position);

@@ -7,6 +7,7 @@
 
 #include "techniques/projected/caster_surface_from_light.h"
 #include "techniques/projected/hidden_layers.h"
+#include "techniques/projected/pierced_receivers.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/projected/receiver_cells.h"
 #include "techniques/projected/receiver_depth_planes.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -93,9 +95,16 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   // be in its shadow (and behind the light nothing is): keep -z >= caster_front.
   std::vector<glm::vec4> view_planes = {{0.0f, 0.0f, -1.0f, -view.caster_front}};
   view_planes.insert(view_planes.end(), view.tile_planes.begin(), view.tile_planes.end());
+  const glm::mat4 world_from_view = glm::inverse(view.view);
+  // A flat caster (planar_caster; world, positive on the light's side) shadows nothing on the
+  // light's side of its plane: receivers are clipped to the far side (light view space, a world
+  // plane p is transpose(world_from_view) p there), and where the caster passes through one
+  // that clip is the shadow's edge, exact to the pixel (a texture's edge there moves it by up
+  // to a texel: issue 14, a plate through a cylinder seen close). Flag 0x80 per vertex below.
+  const std::optional<glm::vec4> flat = planar_caster(scene.objects[caster], light.position);
+  if (flat) view_planes.push_back(-(glm::transpose(world_from_view) * *flat));
   std::vector<glm::vec4> band_planes;  // view_planes and the receiver's depth band's plane
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.
-  const glm::mat4 world_from_view = glm::inverse(view.view);
   std::vector<std::vector<glm::vec4>> beam_regions;
   for (const std::vector<glm::vec4> &region : view.beam.regions) {
     beam_regions.emplace_back();
@@ -195,15 +204,17 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       const int region = beam_regions.empty() ? 0 : beam.region_holding(receiver.world[i]);
       flags[i] |= region < 0 ? 0x20u : static_cast<unsigned>(region) << 8;
       if ((band < 0 && p.w > caster_back) || (band > 0 && p.w < caster_back)) flags[i] |= 0x40;
+      if (flat && glm::dot(*flat, glm::vec4(receiver.world[i], 1.0f)) > 0.0f) flags[i] |= 0x80;
     }
     const std::vector<glm::uvec3> &triangles = receiver.object->mesh.triangles;
     for (const glm::uvec3 &t : triangles) {
       const auto number = static_cast<std::size_t>(&t - triangles.data());  // in the mesh
       const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-      // Listing 2: skip triangles facing away from the light and those wholly outside its view.
+      // Listing 2: skip triangles facing away from the light and those wholly outside its view
+      // (or on the light's side of a flat caster's plane).
       const glm::vec3 face = glm::cross(b - a, c - a);  // world, towards the lit side
       if (glm::dot(face, light.position - a) <= 0.0f) continue;
-      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0x5F) != 0) continue;
+      if ((flags[t.x] & flags[t.y] & flags[t.z] & 0xDF) != 0) continue;
       unsigned any_outside = flags[t.x] | flags[t.y] | flags[t.z];
       // Nearer the light than the band's plane, the receiver's triangles that its own surface
       // hides from the light (in part) take the texture masked by its farthest light-facing
@@ -239,7 +250,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         }
       }
       const std::vector<glm::vec4> &planes = (any_outside & 0x40) != 0 ? band_planes : view_planes;
-      const bool in_front = (any_outside & 0x50) != 0;
+      const bool in_front = (any_outside & 0xD0) != 0;  // of the caster's front, or its plane
       // Corners in different pieces (a gobo's panes) leave a bar between them.
       const bool beyond_beam = (any_outside & 0x20) != 0 ||
                                ((flags[t.x] ^ flags[t.y]) | (flags[t.x] ^ flags[t.z])) >> 8 != 0;

@@ -97,8 +97,11 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
                                const LightView &view,
                                const std::vector<PiercedReceiver> &pierced) {
   ReceiverLayers layers;
-  const glm::mat4 light_clip = view.projection * view.view;
   const SceneObject &object = scene.objects[caster];
+  // A flat caster's receivers are clipped to the far side of its plane in step 3, which keeps
+  // every nearer layer lit and every farther one in its shadow: no layer needs a mask.
+  if (planar_caster(object, view.position)) return layers;
+  const glm::mat4 light_clip = view.projection * view.view;
   const Mesh &mesh = caster_mesh(object);
   std::vector<glm::vec4> clip(mesh.positions.size());
   glm::vec3 low(INFINITY), high(-INFINITY);
