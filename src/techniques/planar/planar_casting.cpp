@@ -162,7 +162,12 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
     r.normal = cross / length;
     r.offset = glm::dot(r.normal, r.corner[0]);
     r.light_height = glm::dot(r.normal, light.position) - r.offset;
-    if (r.light_height <= 0.0f) continue;  // facing away from the light
+    const glm::dvec3 a(r.corner[0]), b(r.corner[1]), c(r.corner[2]);
+    r.exact_normal = glm::normalize(glm::cross(b - a, c - a));
+    r.exact_offset = glm::dot(r.exact_normal, a);
+    r.exact_light_height = glm::dot(r.exact_normal, glm::dvec3(light.position)) - r.exact_offset;
+    // Facing away from the light (or level with it, as far as either precision tells).
+    if (r.light_height <= 0.0f || r.exact_light_height <= 0.0) continue;
     for (const glm::vec3 &corner : r.corner) {
       r.light_reach = std::max(r.light_reach, glm::distance(corner, light.position));
     }
@@ -186,31 +191,57 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
 // `light_distance` s: above h (1 - s / reach) it lands beyond the receiver's farthest corner,
 // where the edges would cut it anyway. The cut is that, or kNearLightHeight where that is lower
 // (a caster a millimetre from the light, as a light inside a box, keeps all it shadows).
-float top_of_casting(const CasterTriangle &caster, const ReceiverTriangle &receiver) {
+float top_share(const CasterTriangle &caster, const ReceiverTriangle &receiver) {
   const float share = std::max(caster.light_distance / receiver.light_reach, kNearestLightShare);
-  return receiver.light_height * std::max(kNearLightHeight, 1.0f - share);
+  return std::max(kNearLightHeight, 1.0f - share);
+}
+
+float top_of_casting(const CasterTriangle &caster, const ReceiverTriangle &receiver) {
+  return receiver.light_height * top_share(caster, receiver);
+}
+
+// Keeps the part of a convex polygon (n corners in `v`) where `height` >= 0, as clip_keep.
+template <typename Height>
+void clip_exact(std::array<glm::dvec3, 5> &v, std::size_t &n, Height height) {
+  std::array<glm::dvec3, 5> kept;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 &a = v[i], &b = v[(i + 1) % n];
+    const double da = height(a), db = height(b);
+    if (da >= 0.0) kept[k++] = a;
+    if ((da >= 0.0) != (db >= 0.0)) {
+      const bool forward = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+      kept[k++] = forward ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
+    }
+  }
+  v = kept, n = k;
 }
 
 // Listing 1's lines 05-09 for one pair, in world space: the caster triangle clipped to the part
 // between the receiver's plane and the light's height above it, projected from the light onto
 // the plane, and clipped against the receiver's three edges within the plane.
 void cast_on(const CasterTriangle &caster, const ReceiverTriangle &receiver,
-             const glm::vec3 &light, const std::array<float, 3> &height,
-             const std::vector<glm::vec4> &beam, SmallPolygon &polygon, SmallPolygon &scratch) {
-  const float top = top_of_casting(caster, receiver);
-  polygon.n = 3;
-  std::copy(caster.corner.begin(), caster.corner.end(), polygon.v.begin());
-  if (std::min({height[0], height[1], height[2]}) < 0.0f) {
-    clip_keep(polygon, receiver.normal, receiver.offset, scratch);  // beyond the plane
-  }
-  if (std::max({height[0], height[1], height[2]}) > top) {
-    clip_keep(polygon, -receiver.normal, -(receiver.offset + top), scratch);
-  }
-  for (std::size_t i = 0; i < polygon.n; ++i) {
+             const glm::vec3 &light, const std::vector<glm::vec4> &beam, SmallPolygon &polygon,
+             SmallPolygon &scratch) {
+  // The cut between the plane and the top, and the projection, in double on the receiver's exact
+  // plane: so every kept corner lies at most kNearLightHeight of the way up to the light however
+  // close the plane passes to the light, and projects at most a thousand times as far.
+  const double light_height = receiver.exact_light_height;
+  const double top = light_height * top_share(caster, receiver);
+  auto above = [&](const glm::dvec3 &p) {
+    return glm::dot(receiver.exact_normal, p) - receiver.exact_offset;
+  };
+  std::array<glm::dvec3, 5> cut = {glm::dvec3(caster.corner[0]), glm::dvec3(caster.corner[1]),
+                                   glm::dvec3(caster.corner[2])};
+  std::size_t n = 3;
+  clip_exact(cut, n, above);  // beyond the plane
+  clip_exact(cut, n, [&](const glm::dvec3 &p) { return top - above(p); });
+  const glm::dvec3 from(light);
+  polygon.n = n;
+  for (std::size_t i = 0; i < n; ++i) {
     // Along the ray from the light: the plane is reached at light_height / (light_height - d).
-    const float d = glm::dot(receiver.normal, polygon.v[i]) - receiver.offset;
-    polygon.v[i] = light + (polygon.v[i] - light) *
-                               (receiver.light_height / (receiver.light_height - d));
+    const double along = light_height / (light_height - above(cut[i]));
+    polygon.v[i] = glm::vec3(from + (cut[i] - from) * along);
   }
   for (std::size_t e = 0; e < 3 && polygon.n >= 3; ++e) {
     clip_keep(polygon, receiver.inward[e], receiver.inward_offset[e], scratch);
@@ -280,7 +311,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
             // Beyond the beam's sure inside: one polygon per lit region (light_beam.h).
             const std::size_t pieces = r.beyond_beam ? beam.regions.size() : 1;
             for (std::size_t piece = 0; piece < pieces; ++piece) {
-              cast_on(c, r, light.position, height, beam.regions[piece], polygon, scratch);
+              cast_on(c, r, light.position, beam.regions[piece], polygon, scratch);
               if (polygon.n < 3) continue;
               if (!hidden_known) {
                 hidden_regions(caster, r, scene.camera.position, pixel, hidden, polygon_b,
