@@ -1,7 +1,8 @@
 // The projected shadow technique on small scenes whose answer is known: where the shadow must be,
-// where it must not (the caster itself, behind the light, between the light and the caster),
-// the texture's clean border, and the LFB and direct paths giving the same texture.
-#include "context.h"
+// where it must not (the caster itself, behind the light, between the light and the caster,
+// outside the cone), the variants (chroma key, auto size, distance alpha) and the fighters.
+// The textures themselves: projected_shadow_textures_test.cpp; overlapping shadows:
+// projected_shadow_overlap_test.cpp.
 #include "scene/fight_scene.h"
 #include "techniques/projected/projected_shadow.h"
 
@@ -9,80 +10,10 @@
 #include <glide_shim.h>
 #include <gtest/gtest.h>
 
-#include "technique_fixture.h"
+#include "projected_shadow_fixture.h"
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <algorithm>
-#include <cstring>
-
 namespace {
-
-
-class ProjectedShadowTest : public TechniqueTest {
- protected:
-
-
-  // Which pixels the technique darkened (white in render_shadow_mask).
-  static std::vector<bool> shadow_mask(const gs::Scene &scene, const gs::ProjectedShadowOptions &options,
-                                       gs::ShadowFrame *out = nullptr) {
-    const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
-    gs::render_shadow_mask(scene, options, frame);
-    std::vector<bool> mask;
-    for (FxU16 p : back_buffer()) mask.push_back(p != 0);
-    if (out != nullptr) *out = frame;
-    return mask;
-  }
-
-  // box_over_floor with `boxes` small boxes more in a row, standing apart: touching ones hide
-  // each other's sides from the light, and each such pair takes one more texture
-  // (receiver_layers.h).
-  static gs::Scene boxes_in_a_row(int boxes) {
-    gs::Scene scene = box_over_floor();
-    for (int i = 0; i < boxes; ++i) {
-      scene.objects.push_back(object(
-          "box " + std::to_string(i), gs::make_box(glm::vec3(0.1f)),
-          {-3.2f + 0.35f * static_cast<float>(i), 1.0f, 1.0f}));
-    }
-    return scene;
-  }
-
-  // Every caster of `scene` casts, one 256-texel texture each on the direct path, and each the
-  // shadow it casts in a frame whose textures all fit: the mask is the union of the masks of the
-  // first half of the casters alone and the second half alone, pixel for pixel (the mask pass
-  // draws each texture alone). Returns the whole frame.
-  static gs::ShadowFrame expect_the_union_of_halves(const gs::Scene &scene) {
-    gs::ProjectedShadowOptions options;
-    options.size = 256;
-    options.direct_path = true;
-    const std::size_t casters = scene.objects.size() - 1;  // all but the floor
-    gs::ShadowFrame frame;
-    const std::vector<bool> all = shadow_mask(scene, options, &frame);
-    EXPECT_EQ(frame.jobs.size(), casters);
-    EXPECT_TRUE(frame.errors.empty()) << frame.errors.front();
-    EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
-    std::vector<bool> halves(all.size(), false);
-    for (int half = 0; half < 2; ++half) {
-      gs::Scene part = scene;
-      for (std::size_t k = 1; k < part.objects.size(); ++k) {
-        part.objects[k].casts_shadow = (k <= casters / 2) == (half == 0);
-      }
-      gs::ShadowFrame part_frame;
-      const std::vector<bool> mask = shadow_mask(part, options, &part_frame);
-      EXPECT_EQ(part_frame.jobs.size(), half == 0 ? casters / 2 : casters - casters / 2);
-      EXPECT_FALSE(part_frame.textures_loaded) << "half of them fit";
-      for (std::size_t p = 0; p < mask.size(); ++p) halves[p] = halves[p] || mask[p];
-    }
-    EXPECT_GT(count(all), 1000);
-    EXPECT_TRUE(all == halves) << count(all, halves) << " pixels in common of "
-                               << count(all) << " and "
-                               << count(halves);
-    return frame;
-  }
-
-
-
-
-};
 
 TEST_F(ProjectedShadowTest, ShadowFallsUnderTheCasterAndNotOnIt) {
   const gs::Scene scene = box_over_floor();
@@ -146,107 +77,6 @@ TEST_F(ProjectedShadowTest, NothingBehindTheLightIsShadowed) {
   EXPECT_GT(count(mask, coverage(scene, 2)), 20) << "no shadow on the wall beyond the caster";
 }
 
-TEST_F(ProjectedShadowTest, TextureKeepsACleanBorderInEveryDemoFrame) {
-  gs::FightScene fight(kWidth, kHeight, 128);
-  gs::ProjectedShadowOptions options;
-  options.size = 128;
-  for (float time : {0.0f, 1.0f, 2.1f, 4.0f, 5.3f, 7.0f}) {
-    const gs::Scene &scene = fight.at(time);
-    const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
-    // A texture per fighter, and one more per receiver it reaches through (its soles into the
-    // mat's relief, pierced_receivers.h): each keeps the border.
-    ASSERT_GE(frame.jobs.size(), 2u) << "time " << time;
-    for (const std::size_t fighter : gs::FightScene::kFighters) {
-      EXPECT_TRUE(std::any_of(frame.jobs.begin(), frame.jobs.end(),
-                              [&](const gs::ShadowJob &job) { return job.caster == fighter; }))
-          << "time " << time << ": fighter " << fighter << " has no texture";
-    }
-    for (const gs::ShadowJob &job : frame.jobs) {
-      const auto *words = reinterpret_cast<const FxU16 *>(glide_shim::current().tmu.memory.data() +
-                                                          job.texture.address);
-      int drawn = 0, border = 0;
-      for (int y = 0; y < 128; ++y) {
-        for (int x = 0; x < 128; ++x) {
-          const bool set = words[y * 128 + x] != 0;
-          drawn += set;
-          border += set && (x < 2 || y < 2 || x >= 126 || y >= 126);
-        }
-      }
-      // A fighter's texture for the other fighter it reaches into holds only what lies nearer
-      // the light than that fighter's surface and its outline's fins (pierced_surfaces.cpp):
-      // 499 texels at t = 4 (636 before the fins), the whole fighter about 1,900. The one for
-      // the parts of the other fighter that fighter's own surface hides from the light
-      // (SurfaceMask::farthest) holds the caster only over that fighter's farthest surface:
-      // 58 texels at t = 4, 10 at t = 5.3.
-      EXPECT_GT(drawn, job.mask_farthest ? 0 : 400) << "time " << time << ": caster missing from its texture";
-      EXPECT_EQ(border, 0) << "time " << time << ": caster touches the texture's border";
-    }
-  }
-}
-
-// 128 texels: at 64, the edge-error estimate refuses the blue fighter's shadow at 0.5 s (its
-// edges followed past the screen's sides since edge17), and a refused shadow has no texture.
-TEST_F(ProjectedShadowTest, LfbAndDirectPathsGiveIdenticalTextures) {
-  constexpr int kSize = 128;
-  gs::FightScene fight(kWidth, kHeight, kSize);
-  for (float time : {0.5f, 2.1f, 5.3f}) {
-    const gs::Scene &scene = fight.at(time);
-    std::vector<std::vector<std::uint8_t>> textures[2];
-    for (int direct = 0; direct < 2; ++direct) {
-      gs::ProjectedShadowOptions options;
-      options.size = kSize;
-      options.direct_path = direct == 1;
-      const gs::ShadowFrame frame = gs::render_projected_shadows(scene, options, false);
-      EXPECT_TRUE(frame.errors.empty()) << "time " << time << ": " << frame.errors.front();
-      for (const gs::ShadowJob &job : frame.jobs) {
-        const std::uint8_t *bytes = glide_shim::current().tmu.memory.data() + job.texture.address;
-        textures[direct].emplace_back(bytes, bytes + kSize * kSize * 2);
-      }
-    }
-    // A fighter's, and one per receiver it reaches through; none for a receiver wholly nearer
-    // the light than the fighter (the other fighter at 2.1 s: caster_surface_from_light.h).
-    ASSERT_GE(textures[0].size(), time == 2.1f ? 1u : 2u);
-    EXPECT_TRUE(textures[0] == textures[1]) << "time " << time;
-  }
-  EXPECT_EQ(glideShimGetLastError(), GLIDESHIM_OK) << glideShimGetLastErrorMessage();
-}
-
-TEST_F(ProjectedShadowTest, A512MapIsFourVoodooTexturesThatShadowLikeOne) {
-  // A Voodoo 1 texture is at most 256x256: a 512 map is drawn as four tiles, and the shadow they
-  // cast together is the one map's (up to edge resolution), with no seam left unshadowed.
-  const gs::Scene scene = box_over_floor();
-  gs::ProjectedShadowOptions one, tiled;
-  tiled.size = 512;
-  gs::ShadowFrame frame;
-  const std::vector<bool> tiled_mask = shadow_mask(scene, tiled, &frame);
-  EXPECT_EQ(frame.jobs.size(), 4u);
-  const std::vector<bool> one_mask = shadow_mask(scene, one);
-  int tiled_count = 0, one_count = 0;
-  for (bool b : tiled_mask) tiled_count += b;
-  for (bool b : one_mask) one_count += b;
-  EXPECT_GT(one_count, 200);
-  EXPECT_GE(count(tiled_mask, one_mask), one_count * 95 / 100) << "tiles leave part of the shadow out";
-  EXPECT_LE(tiled_count, one_count * 105 / 100) << "tiles shadow more than the map";
-}
-
-TEST_F(ProjectedShadowTest, TexturesBeyondTmuMemoryAreLoadedInTurn) {
-  // 20 casters at 256x256 ARGB_4444 need 2.5 MB; the TMU has 2 MB: step 2 places 16, and the
-  // other 4 are loaded (step 1 drawn again on the direct path) over textures already drawn with
-  // as step 5 and the mask pass come to them.
-  const gs::ShadowFrame frame = expect_the_union_of_halves(boxes_in_a_row(19));
-  EXPECT_TRUE(frame.textures_loaded);
-}
-
-TEST_F(ProjectedShadowTest, AShadowTextureWhereTheBeamMapGoesIsLoadedAgain) {
-  // A beam map's scene pass downloads its texture at 1.5 MB (kProjectiveTextureAddress), where
-  // the 13th 256-texel shadow texture lies: 14 casters, which all fit, and that one is loaded
-  // again after the scene pass.
-  gs::Scene scene = boxes_in_a_row(13);
-  scene.lights[0].beam = "round";
-  const gs::ShadowFrame frame = expect_the_union_of_halves(scene);
-  EXPECT_TRUE(frame.textures_loaded);
-}
-
 TEST_F(ProjectedShadowTest, ALightInsideTheCastersBoundingSphereStillCastsIt) {
   // 0.8 m above a box of radius 0.87 m: no view fitted to the bounding sphere exists, so the
   // view is fitted to what the cone holds of the box, and the shadow is cast, without a word.
@@ -301,80 +131,6 @@ TEST_F(ProjectedShadowTest, ACasterOutsideTheConeCastsNothingAndSaysNothing) {
   EXPECT_TRUE(frame.errors.empty());
   EXPECT_TRUE(frame.warnings.empty());
   EXPECT_TRUE(frame.jobs.empty());
-}
-
-// Issue 16 item 4: two casters of one light whose shadows overlap darken the overlap once, as
-// a single shadow does: each pixel step 5 darkens is marked in the depth buffer, and the next
-// shadow of the same light fails there.
-TEST_F(ProjectedShadowTest, OverlappingShadowsOfOneLightDarkenOnce) {
-  gs::Scene scene = box_over_floor();
-  scene.lights[0].position = {0, 8, 0};
-  scene.objects[1] = object("left", gs::make_box({0.6f, 0.1f, 0.3f}), {-0.3f, 2.0f, 0});
-  scene.objects.push_back(object("right", gs::make_box({0.6f, 0.1f, 0.3f}), {0.3f, 2.5f, 0.1f}));
-  gs::ProjectedShadowOptions options;
-  options.bilinear = false;  // hard edges: every shadowed pixel is darkened by the full alpha
-  gs::ShadowFrame frame;
-  const std::vector<bool> mask = shadow_mask(scene, options, &frame);
-  ASSERT_EQ(frame.jobs.size(), 2u);
-  gs::render_projected_shadows(scene, options, false);
-  const std::vector<FxU16> both = back_buffer();
-  // Each caster alone: where both shadows fall, the frame is what either one alone gives.
-  std::vector<std::vector<FxU16>> alone;
-  std::vector<std::vector<bool>> alone_mask;
-  for (std::size_t caster : {1u, 2u}) {
-    gs::Scene one = scene;
-    one.objects[caster == 1 ? 2 : 1].casts_shadow = false;
-    alone_mask.push_back(shadow_mask(one, options));
-    gs::render_projected_shadows(one, options, false);
-    alone.push_back(back_buffer());
-  }
-  const std::vector<bool> floor = coverage(scene, 0);
-  int overlap = 0, darker = 0;
-  for (std::size_t i = 0; i < both.size(); ++i) {
-    if (!floor[i] || !alone_mask[0][i] || !alone_mask[1][i]) continue;
-    ++overlap;
-    if (both[i] != alone[0][i]) ++darker;
-  }
-  EXPECT_GT(overlap, 100) << "the shadows do not overlap: the test tests nothing";
-  EXPECT_EQ(darker, 0) << "the overlap is darkened twice";
-  // And the mask is the union of the two.
-  int union_mismatch = 0;
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    union_mismatch += mask[i] != (alone_mask[0][i] || alone_mask[1][i]);
-  EXPECT_EQ(union_mismatch, 0);
-}
-
-// The same with filtered edges, the default: where one shadow's soft edge lies inside the
-// other's core, the pixel is darkened by the core, as it would be by that shadow alone; the
-// soft edge drawn first must not mark it lighter (a bright seam inside the shadow). A shadow's
-// core is where its filtered frame equals its point-sampled one (full texture alpha).
-TEST_F(ProjectedShadowTest, OverlappingFilteredShadowsLeaveNoSeamInEachOthersCore) {
-  gs::Scene scene = box_over_floor();
-  scene.lights[0].position = {0, 8, 0};
-  scene.objects[1] = object("left", gs::make_box({0.6f, 0.1f, 0.3f}), {-0.3f, 2.0f, 0});
-  scene.objects.push_back(object("right", gs::make_box({0.6f, 0.1f, 0.3f}), {0.3f, 2.5f, 0.1f}));
-  gs::ProjectedShadowOptions filtered, point;
-  point.bilinear = false;
-  ASSERT_EQ(gs::render_projected_shadows(scene, filtered, false).jobs.size(), 2u);
-  const std::vector<FxU16> both = back_buffer();
-  const std::vector<bool> floor = coverage(scene, 0);
-  for (std::size_t caster : {1u, 2u}) {
-    gs::Scene one = scene;
-    one.objects[caster == 1 ? 2 : 1].casts_shadow = false;
-    const std::vector<bool> hard = shadow_mask(one, point);
-    gs::render_projected_shadows(one, point, false);
-    const std::vector<FxU16> alone_point = back_buffer();
-    gs::render_projected_shadows(one, filtered, false);
-    const std::vector<FxU16> alone = back_buffer();
-    int core = 0, differ = 0;
-    for (std::size_t i = 0; i < both.size(); ++i) {
-      if (!floor[i] || !hard[i] || alone[i] != alone_point[i]) continue;
-      ++core;
-      differ += both[i] != alone[i];
-    }
-    EXPECT_GT(core, 300) << "caster " << caster << " has no core: the test tests nothing";
-    EXPECT_EQ(differ, 0) << "pixels of caster " << caster << "'s core that the other shadow's edge left lighter";
-  }
 }
 
 TEST_F(ProjectedShadowTest, ChromaKeyVariantShadowsTheSameRegionWithHardEdges) {
