@@ -59,7 +59,7 @@ namespace {
 // 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
 // by up to 1/32 px of its gradient (measured: 1.8 to 2.8 codes at the right edge of
 // tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%). The margin is twice
-// that stray; the covers and seals themselves do not stray, since draw_at_level clips them to
+// that stray; the covers and seals themselves do not stray, since clip_to_window cuts them to
 // the window first with their depths on the plane. Receivers inside the window get none of it:
 // on a receiver seen edge-on it would let covers pass what lies close in front of it (with it on
 // every receiver, the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
