@@ -30,7 +30,7 @@ namespace {
 //   - the cover, kCoverCodes nearer than its receiver: it passes the receiver the scene pass left
 //     in the depth buffer and darkens the pixel;
 //   - the seal, kCoverSealCodes nearer again, at alpha 0 (the colour is left as it is): it writes a
-//     depth that every later cover on that pixel, lying on the same plane, fails by kCoverSealCodes.
+//     depth that every later cover on that pixel, lying on the same plane, fails.
 // A single level (the cover with depth writes on) is not enough: two polygons on one plane would
 // have to interpolate exactly the same depth at a pixel they share for the second to fail, and
 // the rounding of their different vertices makes either one the nearer as often as not.
@@ -58,21 +58,33 @@ namespace {
 // shim's guDrawTriangleWithClip clips it to the window and snaps the vertices it makes there to
 // 1/16 px while keeping their interpolated depth, so the scene pass's depth strays from the plane
 // by up to 1/32 px of its gradient (measured: 1.8 to 2.8 codes at the right edge of
-// tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%), and the cover, clipped
-// the same way, by as much again. Receivers inside the window get none of it: on a receiver seen
-// edge-on it would let covers pass what lies close in front of it (with it on every receiver,
-// the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
+// tests/hard_cases/audit/y4, where 2 codes left single lit pixels, 0.100%). The margin is twice
+// that stray; the covers and seals themselves do not stray, since clip_to_window cuts them to
+// the window first with their depths on the plane. Receivers inside the window get none of it:
+// on a receiver seen edge-on it would let covers pass what lies close in front of it (with it on
+// every receiver, the interior error of tests/hard_cases/audit/v7 rose from 0.023% to 0.084%).
 // An occluder closer to the receiver than 0.03% (0.14%) of its distance, plus that 1/16 px of its
 // gradient near the screen's edges, may let a cover show through, unless it is a caster passing
 // through the receiver's plane: step 1 leaves out what that caster hides of the plane from the
 // camera (planar_casting.cpp, HiddenRegion).
+// The seal stands half a code above its cover, less than any cover's margin, and never more: a
+// seal on a receiver writes its depth over whatever visible surface lies within the seal's reach
+// in front of that receiver, and that surface's own cover then fails. Where the seal's reach
+// is no more than its cover's, the seal passes such a surface only where its own cover has
+// passed it and darkened the pixel already (but for a fraction of a code of W-buffer rounding).
+// The seal used to be 16 codes above the cover (and 1/8 px of the gradient above it past the
+// window, against the shim's strays of two covers clipped there): it left lines of lit pixels
+// where one part of a fighter passes into another (tests/hard_cases/audit/
+// stencil17_sv4_camera_in_ball_round_fighters_head: 0.105% of the receiver pixels), and along
+// the edges of dune triangles seen edge-on just in front of a cylinder at the bottom of the
+// screen (/work/aud17 sunk-extra-lights-narrow-cones-camera-behind_17248: 0.306%).
+// Half a code (w times 1.00008) is far above the float rounding of two polygons' depths on one
+// plane (about 1e-7 of 1/w), so a later cover there still fails.
 constexpr float kCoverCodes = 2.0f;
 constexpr float kClippedCoverCodes = 8.0f;
-constexpr float kCoverSealCodes = 2.0f * kClippedCoverCodes;
-// In pixels of the receiver's gradient, over receivers past the window only: the seal clears
-// later covers by kCoverPixels beyond both clips' strays.
+constexpr float kCoverSealCodes = 0.5f;
+// In pixels of the receiver's gradient, over receivers past the window only.
 constexpr float kCoverPixels = 1.0f / 16.0f;
-constexpr float kSealPixels = 2.0f * kCoverPixels;
 
 // The depth (oow) a triangle's screen vertices give across the screen once snapped, which is what
 // the rasteriser interpolates: oow = a x + b y + c, in Glide screen pixels.
@@ -100,6 +112,46 @@ bool outside_window(const GrVertex &v, const Scene &scene) {
   const float x = snap_to_subpixel(v.x), y = snap_to_subpixel(v.y);
   return !(x >= 0.0f && x < static_cast<float>(scene.width) && y >= 0.0f &&
            y < static_cast<float>(scene.height));
+}
+
+// `polygon` (Glide screen, snapped, oow on the receiver's depth `plane`) cut to the screen, short
+// of its right and bottom sides by 1/16 px (the shim's window test wants x < width, y < height;
+// every pixel centre stays inside), each vertex made on a side snapped and given the plane's
+// oow there. The shim then draws it unclipped: its own clip would keep the depth it interpolates
+// at the vertices it snaps, away from the plane by up to 1/32 px of the gradient, and two covers
+// clipped there could each stray their own way past the other's seal.
+void clip_to_window(std::vector<GrVertex> &polygon, const DepthPlane &plane, const Scene &scene,
+                    std::vector<GrVertex> &scratch) {
+  const float right = static_cast<float>(scene.width) - 1.0f / 16.0f;
+  const float bottom = static_cast<float>(scene.height) - 1.0f / 16.0f;
+  // Keeps the part where sign * (coordinate - bound) >= 0.
+  auto clip = [&](bool use_x, float bound, float sign) {
+    scratch.clear();
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const GrVertex &a = polygon[i], &b = polygon[(i + 1) % n];
+      const float da = sign * ((use_x ? a.x : a.y) - bound);
+      const float db = sign * ((use_x ? b.x : b.y) - bound);
+      if (da >= 0.0f) scratch.push_back(a);
+      if ((da >= 0.0f) != (db >= 0.0f)) {
+        // From the same end whichever way the edge is walked, so neighbours sharing it agree.
+        const bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+        const GrVertex &p = forward ? a : b, &q = forward ? b : a;
+        const double dp = forward ? da : db, dq = forward ? db : da;
+        const double t = dp / (dp - dq);
+        GrVertex cut = a;
+        cut.x = use_x ? bound : snap_to_subpixel(static_cast<float>(p.x + (q.x - p.x) * t));
+        cut.y = use_x ? snap_to_subpixel(static_cast<float>(p.y + (q.y - p.y) * t)) : bound;
+        cut.oow = static_cast<float>(plane.at(cut.x, cut.y));
+        scratch.push_back(cut);
+      }
+    }
+    std::swap(polygon, scratch);
+  };
+  clip(true, 0.0f, 1.0f);
+  clip(true, right, -1.0f);
+  if (polygon.size() >= 3) clip(false, 0.0f, 1.0f);
+  if (polygon.size() >= 3) clip(false, bottom, -1.0f);
 }
 
 // A depth level over a receiver: 1/w raised by `codes` W-buffer codes (a share of the depth)
@@ -234,8 +286,10 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
       }
       // The gradient's share only where the shim clipped the receiver to the window.
       const float strays = past_window ? 1.0f : 0.0f;
+      clip_to_window(screen, plane, scene, receiver_screen);
+      if (screen.size() < 3) continue;
       const Level cover = {clipped ? kClippedCoverCodes : kCoverCodes, strays * kCoverPixels};
-      const Level seal = {cover.codes + kCoverSealCodes, cover.pixels + strays * kSealPixels};
+      const Level seal = {cover.codes + kCoverSealCodes, cover.pixels};
       draw_at_level(screen, plane, cover, alpha, short_part, past_part);
       draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
       sealed = true;
