@@ -130,7 +130,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   if (!inside.empty()) {
     view.problem = names + ": the light is inside the caster and '" + inside +
                    "' reaches inside it too; one shadow texture cannot tell what the caster "
-                   "surrounds from what lies beyond it, so it casts no shadow from this light";
+                   "surrounds from what lies beyond it, so " + kCastsNoShadow;
     return view;
   }
   const LightBeam beam = light_beam(light);
@@ -194,7 +194,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
                                         " degree"
                                   : std::string("more than 180 degree")) +
         " view, the widest is " + std::to_string(static_cast<int>(glm::degrees(2.0f * kWidestHalfView))) +
-        "), so it casts no shadow from this light";
+        "), so " + kCastsNoShadow;
     return view;
   }
   view.view = glm::lookAt(light.position, light.position + axis, up_for(axis));
@@ -215,16 +215,15 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
 
 namespace {
 
-// How a refusal ends (texel_footprint_error, shadow_edge_error_message) and what the note puts in
-// its place; the note begins as the refusal does, "light L and 'caster': ".
-constexpr const char *kNoShadowTail = "; it casts no shadow from this light";
+// What the note puts in place of a refusal's end ("; " and kCastsNoShadow); the note begins as
+// the refusal does, "light L and 'caster': ".
 constexpr const char *kGrownWords = "; its shadow is drawn at ";
 constexpr const char *kGrownTail = " texels instead (grow to the accepted size)";
 
 }  // namespace
 
 std::string grown_shadow_note(const std::string &refusal, int size) {
-  const std::string tail = kNoShadowTail;
+  const std::string tail = std::string("; ") + kCastsNoShadow;
   std::string note = refusal;
   if (note.size() >= tail.size() && note.compare(note.size() - tail.size(), tail.size(), tail) == 0) {
     note.resize(note.size() - tail.size());

@@ -406,7 +406,7 @@ std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
          "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
-         "); it casts no shadow from this light";
+         "); " + kCastsNoShadow;
 }
 
 }  // namespace gs

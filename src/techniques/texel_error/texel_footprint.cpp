@@ -121,7 +121,7 @@ std::string texel_footprint_error(const Scene &scene, std::size_t light, std::si
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
          "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
-         accepted_words + "); it casts no shadow from this light";
+         accepted_words + "); " + kCastsNoShadow;
 }
 
 }  // namespace gs
