@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -213,32 +212,15 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   return view;
 }
 
-namespace {
-
-// What the note puts in place of a refusal's end ("; " and kCastsNoShadow); the note begins as
-// the refusal does, "light L and 'caster': ".
-constexpr const char *kGrownWords = "; its shadow is drawn at ";
-constexpr const char *kGrownTail = " texels instead (grow to the accepted size)";
-
-}  // namespace
-
-std::string grown_shadow_note(const std::string &refusal, int size) {
-  const std::string tail = std::string("; ") + kCastsNoShadow;
-  std::string note = refusal;
-  if (note.size() >= tail.size() && note.compare(note.size() - tail.size(), tail.size(), tail) == 0) {
-    note.resize(note.size() - tail.size());
-  }
-  return note + kGrownWords + std::to_string(size) + kGrownTail;
+std::string grown_shadow_note(const std::string &reason, int size) {
+  return reason + "; its shadow is drawn at " + std::to_string(size) +
+         " texels instead (grow to the accepted size)";
 }
 
-int grown_shadow_size(const std::vector<std::string> &warnings, std::size_t light,
-                      const std::string &caster) {
-  const std::string names = "light " + std::to_string(light) + " and '" + caster + "': ";
-  for (const std::string &warning : warnings) {
-    const std::size_t words = warning.rfind(kGrownWords);
-    if (warning.rfind(names, 0) != 0 || words == std::string::npos) continue;
-    const std::string size = warning.substr(words + std::string(kGrownWords).size());
-    if (size.find(kGrownTail) != std::string::npos) return std::atoi(size.c_str());
+int drawn_shadow_size(const std::vector<DrawnShadowSize> &sizes, std::size_t light,
+                      std::size_t caster) {
+  for (const DrawnShadowSize &drawn : sizes) {
+    if (drawn.light == light && drawn.caster == caster) return drawn.size;
   }
   return 0;
 }

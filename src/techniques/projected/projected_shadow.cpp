@@ -103,7 +103,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
       // smallest larger one the estimates accept after a refusal as too coarse, which is then
       // checked again the same way. A refused attempt leaves nothing behind in the frame.
       ProjectedShadowOptions sized = options;
-      std::string grown_from;  // the first attempt's refusal, for the note
+      std::string grown_from;  // the first attempt's refusal's reason, for the note
       for (;;) {
         const std::size_t errors_before = result.errors.size();
         const std::size_t warnings_before = result.warnings.size();
@@ -363,29 +363,30 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           const AcceptedSize accepted =
               smallest_accepted_size(fitted.size, kLargestSize, coarsest.pixels_per_texel,
                                      largest_footprint, at_larger_sizes, largest_edge_error);
-          const std::string refusal =
-              too_coarse ? texel_footprint_error(scene, light, caster, coarsest.receiver,
-                                                 coarsest.pixels_per_texel, largest_footprint,
-                                                 fitted.size, accepted_size_words(accepted))
-                         : shadow_edge_error_message(scene, light, caster, edge_error_receiver,
-                                                     edge_error_taken, within_budget,
-                                                     *largest_edge_error, fitted.size, accepted);
+          const std::string reason =
+              too_coarse ? texel_footprint_reason(scene, light, caster, coarsest.receiver,
+                                                  coarsest.pixels_per_texel, largest_footprint,
+                                                  fitted.size, accepted_size_words(accepted))
+                         : shadow_edge_error_reason(scene, light, caster, edge_error_receiver,
+                                                    edge_error_taken, within_budget,
+                                                    *largest_edge_error, fitted.size, accepted);
           result.textures.release_from(caster_mark);  // its textures are not used
           if (options.grow_to_accepted && accepted.size > fitted.size) {
             result.errors.resize(errors_before);
             result.warnings.resize(warnings_before);
             result.texel_footprint_px = footprint_before;
             edge_error_of_all = of_all_before;
-            if (grown_from.empty()) grown_from = refusal;
+            if (grown_from.empty()) grown_from = reason;
             sized.size = accepted.size, sized.auto_size = false;
             continue;
           }
-          result.errors.push_back(refusal);
+          result.errors.push_back(reason + "; " + kCastsNoShadow);
           break;
         }
         if (!grown_from.empty()) {
           result.warnings.push_back(grown_shadow_note(grown_from, fitted.size));
         }
+        result.sizes.push_back({light, caster, fitted.size});
         edge_error_taken += edge_error.pixels[0];
         for (ShadowJob &job : caster_jobs) result.jobs.push_back(std::move(job));
         caster_jobs.clear();  // what is left of them is not a texture to read (read_pending)

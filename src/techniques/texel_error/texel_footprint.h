@@ -93,9 +93,14 @@ constexpr const char *kCastsNoShadow = "it casts no shadow from this light";
 // The refusal of a shadow whose texels are too coarse for the screen (the projected techniques'
 // and the depth map's), naming the light, the caster, the receiver, the footprint and the
 // largest accepted, ending with `accepted_words` (accepted_size_words, shadow_edge_error.h: the
-// size that would be accepted, along the shadow's edges too) and kCastsNoShadow.
+// size that would be accepted, along the shadow's edges too) and kCastsNoShadow. The reason
+// is the refusal without that end ("; " and kCastsNoShadow), for a note that the shadow was
+// drawn after all (ProjectedShadowOptions::grow_to_accepted).
 std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
                                   std::size_t receiver, float footprint, float largest, int size,
                                   const std::string &accepted_words);
+std::string texel_footprint_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                   std::size_t receiver, float footprint, float largest, int size,
+                                   const std::string &accepted_words);
 
 }  // namespace gs
