@@ -117,6 +117,10 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
           break;
         }
         const float caster_back = farthest_depth(scene.objects[caster], fitted.view);
+        // The caster's plane (world, positive on the light's side) when it is flat, which
+        // steps 1 and 3 ask about every texture.
+        const std::optional<glm::vec4> caster_plane =
+            planar_caster(scene.objects[caster], scene.lights[light].position);
         // This caster's textures (a map above 256 is several, and one more per planar receiver it
         // reaches through); kept only if every one's texels are fine enough for the screen where
         // the shadow falls.
@@ -207,7 +211,7 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
                                                       job.view, options, &receivers,
                                                       middle ? &middle_bands : &bands, caster_back,
                                                       &surfaces, classes.empty() ? nullptr : &classes,
-                                                      over_buried);  // 3
+                                                      over_buried, &caster_plane);  // 3
               finish_step(2, step_start);
               hidden_left = hidden_left || job.receivers.hidden_left;
               if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
@@ -256,14 +260,15 @@ ShadowFrame render_projected_shadows(const Scene &scene, const ProjectedShadowOp
         };
         start = Clock::now();
         std::vector<PiercedReceiver> pierced =
-            pierced_receivers(scene, frame, caster, scene.lights[light].position);
+            pierced_receivers(scene, frame, caster, scene.lights[light].position, caster_plane);
         // Receivers hiding part of the caster from the light get the texture masked by their
         // surface. One holding a caster part between two of its layers takes it too when it casts
         // nothing: its nearer layer the texture masked by its nearest surface, the farther layer
         // that its own surface hides the one masked by its farthest (step 3's depth band -2). One
         // that casts gets no shadow, by name (a pole over a ridge of a floor that casts: 0.111%
         // interior error served with the two textures).
-        const ReceiverLayers layers = receiver_layers(scene, frame, caster, fitted, pierced);
+        const ReceiverLayers layers =
+            receiver_layers(scene, frame, caster, fitted, pierced, caster_plane);
         std::vector<std::size_t> refused;
         for (std::size_t r : layers.between) {
           if (scene.objects[r].casts_shadow) refused.push_back(r);

@@ -277,6 +277,8 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 // `over_buried`, when given, marks per triangle of the receiver in band -1 or -2 those in front of
 // a caster part with a farther layer of it behind (ReceiverLayers::over_buried): band -1's.
+// `caster_plane`, when given, is the caster's planar_caster for `light` (pierced_receivers.h),
+// which the caller has; found here otherwise.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
@@ -285,7 +287,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        float caster_back = 0.0f,
                                        CasterSurfacesFromLight *surfaces = nullptr,
                                        const std::vector<std::uint8_t> *hidden = nullptr,
-                                       const std::vector<std::uint8_t> *over_buried = nullptr);
+                                       const std::vector<std::uint8_t> *over_buried = nullptr,
+                                       const std::optional<glm::vec4> *caster_plane = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended
