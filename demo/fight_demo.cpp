@@ -49,12 +49,12 @@ Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int inde
 }
 
 std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options,
-                                       const std::vector<std::string> &warnings) {
+                                       const std::vector<DrawnShadowSize> &drawn) {
   std::vector<int> sizes;
   for (std::size_t fighter : FightScene::kFighters) {
     const LightView view = fit_light_view(scene, fighter, 0, options);
-    const int grown = grown_shadow_size(warnings, 0, scene.objects[fighter].name);
-    sizes.push_back(!view.usable ? 0 : grown > 0 ? grown : view.size);
+    const int drawn_size = drawn_shadow_size(drawn, 0, fighter);
+    sizes.push_back(!view.usable ? 0 : drawn_size > 0 ? drawn_size : view.size);
   }
   return sizes;
 }
@@ -126,7 +126,7 @@ bool render_fight(const DemoSettings &settings, ShadowTechnique &technique, Demo
     const FrameReport frame = technique.render(scene, true);
     if (i > 0) run.reports.push_back(frame);
     count_warnings(frame, i, run);
-    for (int size : fighter_texture_sizes(scene, settings.shadow_options, frame.warnings)) {
+    for (int size : fighter_texture_sizes(scene, settings.shadow_options, frame.shadow_sizes)) {
       run.texture_sizes.push_back(size);
     }
     grBufferSwap(1);

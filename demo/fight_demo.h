@@ -49,11 +49,11 @@ Scene demo_scene_at(FightScene &fight, const DemoSettings &settings, float time)
 Scene demo_frame_scene(FightScene &fight, const DemoSettings &settings, int index);
 
 // The side of each fighter's shadow texture under the first light in `scene`, as the projected
-// technique fits it (with options.auto_size, from the fighter's size on screen), or the size a
-// note among `warnings` (the frame's, FrameReport::warnings) says it was grown to
-// (options.grow_to_accepted); 0 for a fighter the light cannot give a shadow.
+// technique fits it (with options.auto_size, from the fighter's size on screen), or the size
+// `drawn` (the frame's, FrameReport::shadow_sizes) says it was drawn at (larger where
+// options.grow_to_accepted grew it); 0 for a fighter the light cannot give a shadow.
 std::vector<int> fighter_texture_sizes(const Scene &scene, const ProjectedShadowOptions &options,
-                                       const std::vector<std::string> &warnings = {});
+                                       const std::vector<DrawnShadowSize> &drawn = {});
 
 // Counts one frame's warnings into `run` (each once per frame).
 void count_warnings(const FrameReport &frame, int index, DemoRun &run);

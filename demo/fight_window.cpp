@@ -308,7 +308,7 @@ int play_fight_in_window(const WindowSettings &settings, std::FILE *log) {
     }
     if (!state.paused && elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.9 * fps + 0.1 / elapsed;
     if (state.overlay) {
-      const std::vector<int> sizes = fighter_texture_sizes(scene, options.projected, report.warnings);
+      const std::vector<int> sizes = fighter_texture_sizes(scene, options.projected, report.shadow_sizes);
       draw_text_panel(overlay_lines(state, report, fps, sizes), kInsetMargin, kInsetMargin, 2, width, height);
     }
     // A shadow the frame should show and does not, said on screen whether the overlay is on or

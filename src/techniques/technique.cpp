@@ -48,6 +48,7 @@ class ProjectedTexture final : public ShadowTechnique {
     report.warnings = frame_.warnings;
     report.errors = frame_.errors;
     report.texel_footprint_px = frame_.texel_footprint_px;
+    report.shadow_sizes = frame_.sizes;
     return report;
   }
   void render_mask(const Scene &scene) override { render_shadow_mask(scene, options_, frame_); }

@@ -29,6 +29,9 @@ struct FrameReport {
   // The projected techniques and the depth map: the most screen pixels one shadow texel (or
   // depth-map texel) spans where a shadow edge can fall (texel_footprint.h); 0 for the others.
   double texel_footprint_px = 0.0;
+  // The projected techniques: the size each caster's shadow from each light was drawn at
+  // (ShadowFrame::sizes, drawn_shadow_size); empty for the others.
+  std::vector<DrawnShadowSize> shadow_sizes;
 };
 
 class ShadowTechnique {

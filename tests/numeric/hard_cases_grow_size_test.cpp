@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,17 +27,35 @@ gs::Scene fight_frame(int index) {
 }
 
 // The fighters whose shadow a frame's refusals say is too coarse (texel_footprint_error).
-std::vector<std::string> refused_as_too_coarse(const gs::Scene &scene, const Outcome &o) {
-  std::vector<std::string> names;
+std::vector<std::size_t> refused_as_too_coarse(const gs::Scene &scene, const Outcome &o) {
+  std::vector<std::size_t> fighters;
   for (std::size_t fighter : gs::FightScene::kFighters) {
     const std::string names_them = "light 0 and '" + scene.objects[fighter].name + "': ";
     for (const std::string &e : o.refusals) {
       if (e.rfind(names_them, 0) == 0 && e.find("-texel shadow is too coarse") != std::string::npos) {
-        names.push_back(scene.objects[fighter].name);
+        fighters.push_back(fighter);
       }
     }
   }
-  return names;
+  return fighters;
+}
+
+// The sizes the projected technique drew the frame's shadows at (FrameReport::shadow_sizes),
+// from a render of `scene` of its own, as hard_case_checks.h's run() renders it.
+std::vector<gs::DrawnShadowSize> drawn_sizes(const gs::Scene &scene,
+                                             const gs::TechniqueOptions &options) {
+  std::string error;
+  const std::unique_ptr<gs::ShadowTechnique> technique = gs::make_technique("projected", options, error);
+  EXPECT_TRUE(technique) << error;
+  if (!technique) return {};
+  grGlideInit();
+  EXPECT_TRUE(glideShimSetWindowSize(scene.width, scene.height));
+  EXPECT_TRUE(grSstWinOpen(0, GR_RESOLUTION_NONE, GR_REFRESH_60Hz, GR_COLORFORMAT_ARGB,
+                           GR_ORIGIN_UPPER_LEFT, 2, 1))
+      << glideShimGetLastErrorMessage();
+  const gs::FrameReport frame = technique->render(scene, false);
+  grGlideShutdown();
+  return frame.shadow_sizes;
 }
 
 }  // namespace
@@ -52,7 +72,7 @@ TEST(HardCases, GrowSizeServesACoarseShadowAtTheAcceptedSize) {
     const Outcome refused = run("projected", scene, truth, plain);
     report(what, refused);
     expect_clean_glide(what, refused);
-    const std::vector<std::string> coarse = refused_as_too_coarse(scene, refused);
+    const std::vector<std::size_t> coarse = refused_as_too_coarse(scene, refused);
     ASSERT_FALSE(coarse.empty()) << what << ": accepted, the case tests nothing";
     EXPECT_EQ(refused.refusals.size(), coarse.size()) << what << ": a refusal of another kind";
     for (const std::string &e : refused.refusals) {
@@ -68,8 +88,23 @@ TEST(HardCases, GrowSizeServesACoarseShadowAtTheAcceptedSize) {
     report(what + " --grow-size", served);
     expect_clean_glide(what + " --grow-size", served);
     EXPECT_TRUE(served.refusals.empty()) << what << ": " << served.refusals.front();
-    for (const std::string &name : coarse) {
-      EXPECT_EQ(gs::grown_shadow_size(served.warnings, 0, name), 512) << what << ": " << name;
+    // Each refused fighter's shadow drawn at 512 (the size the refusal named), the other's at
+    // 256 as without the mode; and a note says so for each one grown.
+    const std::vector<gs::DrawnShadowSize> sizes = drawn_sizes(scene, grown);
+    for (std::size_t fighter : gs::FightScene::kFighters) {
+      const bool was_coarse = std::find(coarse.begin(), coarse.end(), fighter) != coarse.end();
+      const std::string &name = scene.objects[fighter].name;
+      EXPECT_EQ(gs::drawn_shadow_size(sizes, 0, fighter), was_coarse ? 512 : 256)
+          << what << ": " << name;
+      const std::string note = "light 0 and '" + name + "': ";
+      EXPECT_EQ(std::count_if(served.warnings.begin(), served.warnings.end(),
+                              [&](const std::string &w) {
+                                return w.rfind(note, 0) == 0 &&
+                                       w.find("; its shadow is drawn at 512 texels instead") !=
+                                           std::string::npos;
+                              }),
+                was_coarse ? 1 : 0)
+          << what << ": " << name;
     }
     EXPECT_LE(served.errors.false_shadow_interior + served.errors.false_light_interior,
               kInteriorBudget)

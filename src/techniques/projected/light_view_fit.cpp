@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -130,7 +129,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   if (!inside.empty()) {
     view.problem = names + ": the light is inside the caster and '" + inside +
                    "' reaches inside it too; one shadow texture cannot tell what the caster "
-                   "surrounds from what lies beyond it, so it casts no shadow from this light";
+                   "surrounds from what lies beyond it, so " + kCastsNoShadow;
     return view;
   }
   const LightBeam beam = light_beam(light);
@@ -194,7 +193,7 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
                                         " degree"
                                   : std::string("more than 180 degree")) +
         " view, the widest is " + std::to_string(static_cast<int>(glm::degrees(2.0f * kWidestHalfView))) +
-        "), so it casts no shadow from this light";
+        "), so " + kCastsNoShadow;
     return view;
   }
   view.view = glm::lookAt(light.position, light.position + axis, up_for(axis));
@@ -213,33 +212,15 @@ LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t lig
   return view;
 }
 
-namespace {
-
-// How a refusal ends (texel_footprint_error, shadow_edge_error_message) and what the note puts in
-// its place; the note begins as the refusal does, "light L and 'caster': ".
-constexpr const char *kNoShadowTail = "; it casts no shadow from this light";
-constexpr const char *kGrownWords = "; its shadow is drawn at ";
-constexpr const char *kGrownTail = " texels instead (grow to the accepted size)";
-
-}  // namespace
-
-std::string grown_shadow_note(const std::string &refusal, int size) {
-  const std::string tail = kNoShadowTail;
-  std::string note = refusal;
-  if (note.size() >= tail.size() && note.compare(note.size() - tail.size(), tail.size(), tail) == 0) {
-    note.resize(note.size() - tail.size());
-  }
-  return note + kGrownWords + std::to_string(size) + kGrownTail;
+std::string grown_shadow_note(const std::string &reason, int size) {
+  return reason + "; its shadow is drawn at " + std::to_string(size) +
+         " texels instead (grow to the accepted size)";
 }
 
-int grown_shadow_size(const std::vector<std::string> &warnings, std::size_t light,
-                      const std::string &caster) {
-  const std::string names = "light " + std::to_string(light) + " and '" + caster + "': ";
-  for (const std::string &warning : warnings) {
-    const std::size_t words = warning.rfind(kGrownWords);
-    if (warning.rfind(names, 0) != 0 || words == std::string::npos) continue;
-    const std::string size = warning.substr(words + std::string(kGrownWords).size());
-    if (size.find(kGrownTail) != std::string::npos) return std::atoi(size.c_str());
+int drawn_shadow_size(const std::vector<DrawnShadowSize> &sizes, std::size_t light,
+                      std::size_t caster) {
+  for (const DrawnShadowSize &drawn : sizes) {
+    if (drawn.light == light && drawn.caster == caster) return drawn.size;
   }
   return 0;
 }

@@ -83,7 +83,8 @@ std::optional<glm::vec4> planar_caster(const SceneObject &caster, const glm::vec
 
 std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGeometry &frame,
                                                std::size_t caster,
-                                               const glm::vec3 &light_position) {
+                                               const glm::vec3 &light_position,
+                                               const std::optional<glm::vec4> &caster_plane) {
   std::vector<PiercedReceiver> pierced;
   const SceneObject &object = scene.objects[caster];
   const Mesh &mesh = caster_mesh(object);
@@ -98,7 +99,7 @@ std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGe
   // receiver to the far side (compute_receiver_coords): the clip is the cut through a receiver
   // that is not planar, exact to the pixel, where a mask by the receiver's surface holds it only
   // to a texel (issue 14: a plate through a cylinder, seen close).
-  const bool flat = planar_caster(object, light_position).has_value();
+  const bool flat = caster_plane.has_value();
   const float tolerance = 1e-4f * glm::length(high - low);
   for (std::size_t r = 0; r < frame.objects.size(); ++r) {
     if (r == caster || !scene.objects[r].receives_shadow) continue;

@@ -52,10 +52,12 @@ std::optional<glm::vec4> planar_caster(const SceneObject &caster, const glm::vec
 // light off it, and a vertex of the caster on the far side of that plane from the light by more
 // than 1e-4 of the caster's size. The others: the caster's surface and theirs pass through each
 // other (an edge of one through a triangle of the other, its ends more than that on either side);
-// none for a flat caster (planar_caster), whose plane step 3 clips them to instead.
+// none for a flat caster (`caster_plane`, its planar_caster for this light), whose plane step 3
+// clips them to instead.
 std::vector<PiercedReceiver> pierced_receivers(const Scene &scene, const FrameGeometry &frame,
                                                std::size_t caster,
-                                               const glm::vec3 &light_position);
+                                               const glm::vec3 &light_position,
+                                               const std::optional<glm::vec4> &caster_plane);
 
 // The non-planar half of pierced_receivers: whether `caster` (world vertices `caster_world` and
 // `caster_triangles` of its caster_mesh, bounds low..high, `tolerance` metres) passes through

@@ -182,13 +182,10 @@ inline GrLOD_t shadow_lod(int size) {
 LightView fit_light_view(const Scene &scene, std::size_t caster, std::size_t light,
                          const ProjectedShadowOptions &options);
 std::vector<LightView> split_into_textures(const LightView &view);
-// ProjectedShadowOptions::grow_to_accepted's note (a warning, not an error): `refusal`, the
-// first size's, with its shadow drawn at `size` texels instead of none. And the size such a
-// note in a frame's warnings says the shadow of `caster` (by name) from `light` was drawn at;
-// 0 when none says so.
-std::string grown_shadow_note(const std::string &refusal, int size);
-int grown_shadow_size(const std::vector<std::string> &warnings, std::size_t light,
-                      const std::string &caster);
+// ProjectedShadowOptions::grow_to_accepted's note (a warning, not an error): the first size's
+// refusal, its `reason` (texel_footprint_reason, shadow_edge_error_reason), with its shadow
+// drawn at `size` texels instead of none.
+std::string grown_shadow_note(const std::string &reason, int size);
 // A non-planar receiver the caster reaches through (pierced_receivers.h): step 1 draws the
 // caster only where it is nearer the light than the receiver's light-facing surface, and marks
 // the caster's triangles that pass through that surface (caster_crossing, per caster_mesh
@@ -280,6 +277,8 @@ std::optional<FxU32> bind_shadow_texture(const ShadowJob &job, ShadowTextureMemo
 // `surfaces`, when given, holds the caster's surfaces from the light built by earlier textures.
 // `over_buried`, when given, marks per triangle of the receiver in band -1 or -2 those in front of
 // a caster part with a farther layer of it behind (ReceiverLayers::over_buried): band -1's.
+// `caster_plane`, when given, is the caster's planar_caster for `light` (pierced_receivers.h),
+// which the caller has; found here otherwise.
 ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &frame,
                                        std::size_t caster, const SpotLight &light,
                                        const LightView &view, const ProjectedShadowOptions &options,
@@ -288,7 +287,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        float caster_back = 0.0f,
                                        CasterSurfacesFromLight *surfaces = nullptr,
                                        const std::vector<std::uint8_t> *hidden = nullptr,
-                                       const std::vector<std::uint8_t> *over_buried = nullptr);
+                                       const std::vector<std::uint8_t> *over_buried = nullptr,
+                                       const std::optional<glm::vec4> *caster_plane = nullptr);
 // Step 4 is render_scene (scene_pass.h).
 // Step 5. The flagged triangles again with the shadow texture: clamp, bilinear, W-buffer a few
 // codes nearer than step 4 with GR_CMP_LESS, alpha = texture alpha x iterated alpha, blended
@@ -306,12 +306,27 @@ void render_light_shadow_passes(const std::vector<const ShadowJob *> &jobs,
                                 const ProjectedShadowOptions &options,
                                 const BindShadowTexture &bind);
 
+// The side (texels) of the map the shadow of a caster (index into scene.objects) from a light
+// (index into scene.lights) was drawn at.
+struct DrawnShadowSize {
+  std::size_t light = 0;
+  std::size_t caster = 0;
+  int size = 0;
+};
+// The size `sizes` holds for the caster and light; 0 when it holds none.
+int drawn_shadow_size(const std::vector<DrawnShadowSize> &sizes, std::size_t light,
+                      std::size_t caster);
+
 struct ShadowFrame {
   StepTimes times;
   FrameGeometry geometry;             // step 4's projection of the scene
   std::vector<ShadowJob> jobs;        // one per caster and light that got a shadow
   std::vector<std::string> warnings;  // what the user should know, `errors` included
   std::vector<std::string> errors;    // casters left without a shadow they should cast, and why
+  // Per caster and light whose shadow the frame casts (in `jobs`, or in none where no receiver
+  // shows it): the size it was drawn at, the fitted one (LightView::size of the whole map) or
+  // the larger one grow_to_accepted drew it at instead (a note among `warnings` says so).
+  std::vector<DrawnShadowSize> sizes;
   // The most screen pixels a shadow texel spanned on its receivers (shadow_footprint), over
   // every caster and light, cast or refused (at the size cast: an attempt grown past,
   // grow_to_accepted, is not counted): what largest_texel_footprint_px bounds.

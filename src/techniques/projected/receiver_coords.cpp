@@ -88,7 +88,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
                                        const std::vector<signed char> *depth_bands,
                                        float caster_back, CasterSurfacesFromLight *surfaces,
                                        const std::vector<std::uint8_t> *hidden_classes,
-                                       const std::vector<std::uint8_t> *over_buried) {
+                                       const std::vector<std::uint8_t> *over_buried,
+                                       const std::optional<glm::vec4> *caster_plane) {
   ReceiverCoords coords;
   const glm::mat4 light_clip = view.projection * view.view;
   // Light view space: the part of a receiver nearer the light than the caster's bounds cannot
@@ -101,7 +102,8 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   // plane p is transpose(world_from_view) p there), and where the caster passes through one
   // that clip is the shadow's edge, exact to the pixel (a texture's edge there moves it by up
   // to a texel: issue 14, a plate through a cylinder seen close). Flag 0x80 per vertex below.
-  const std::optional<glm::vec4> flat = planar_caster(scene.objects[caster], light.position);
+  const std::optional<glm::vec4> flat =
+      caster_plane ? *caster_plane : planar_caster(scene.objects[caster], light.position);
   if (flat) view_planes.push_back(-(glm::transpose(world_from_view) * *flat));
   std::vector<glm::vec4> band_planes;  // view_planes and the receiver's depth band's plane
   // The light's inner beam (light_beam.h) in light view space: no shadow outside it.

@@ -95,12 +95,13 @@ void bucket_layer_triangles(const std::vector<LayerTriangle> &list, const glm::v
 
 ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, std::size_t caster,
                                const LightView &view,
-                               const std::vector<PiercedReceiver> &pierced) {
+                               const std::vector<PiercedReceiver> &pierced,
+                               const std::optional<glm::vec4> &caster_plane) {
   ReceiverLayers layers;
   const SceneObject &object = scene.objects[caster];
   // A flat caster's receivers are clipped to the far side of its plane in step 3, which keeps
   // every nearer layer lit and every farther one in its shadow: no layer needs a mask.
-  if (planar_caster(object, view.position)) return layers;
+  if (caster_plane) return layers;
   const glm::mat4 light_clip = view.projection * view.view;
   const Mesh &mesh = caster_mesh(object);
   std::vector<glm::vec4> clip(mesh.positions.size());

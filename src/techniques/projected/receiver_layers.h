@@ -36,10 +36,12 @@ struct ReceiverLayers {
 };
 
 // Tests every non-planar receiver of `caster`'s shadow not already in `pierced` (and the
-// non-planar pierced ones, for `between`) in the light's view `view` (step 1's, world in).
+// non-planar pierced ones, for `between`) in the light's view `view` (step 1's, world in);
+// none for a flat caster (`caster_plane`, its planar_caster for this light).
 ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, std::size_t caster,
                                const LightView &view,
-                               const std::vector<PiercedReceiver> &pierced);
+                               const std::vector<PiercedReceiver> &pierced,
+                               const std::optional<glm::vec4> &caster_plane);
 
 // The per-frame error for a receiver in ReceiverLayers::between.
 std::string receiver_layers_error(const Scene &scene, std::size_t light, std::size_t caster,

@@ -396,6 +396,15 @@ std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
                                       int size, const AcceptedSize &accepted) {
+  return shadow_edge_error_reason(scene, light, caster, receiver, taken, frame, largest_pixels,
+                                  size, accepted) +
+         "; " + kCastsNoShadow;
+}
+
+std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                     std::size_t receiver, float taken,
+                                     const EdgeErrorEstimate &frame, float largest_pixels,
+                                     int size, const AcceptedSize &accepted) {
   char pixels[200];
   std::snprintf(pixels, sizeof pixels,
                 "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
@@ -406,7 +415,7 @@ std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
          "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
-         "); it casts no shadow from this light";
+         ")";
 }
 
 }  // namespace gs

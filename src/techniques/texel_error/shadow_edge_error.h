@@ -134,10 +134,15 @@ std::string accepted_size_words(const AcceptedSize &accepted);
 // The refusal of a shadow whose edges would stray too far (the projected techniques' and the
 // depth map's), naming the light, the caster, the receiver with the most of the error, the
 // estimate (`frame`: the frame's with this shadow's, `taken` of it by the shadows before)
-// against the most accepted (pixels), and the size that would be accepted.
+// against the most accepted (pixels), and the size that would be accepted, ending with
+// kCastsNoShadow (texel_footprint.h); the reason is the refusal without that end.
 std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
                                       std::size_t receiver, float taken,
                                       const EdgeErrorEstimate &frame, float largest_pixels,
                                       int size, const AcceptedSize &accepted);
+std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                     std::size_t receiver, float taken,
+                                     const EdgeErrorEstimate &frame, float largest_pixels,
+                                     int size, const AcceptedSize &accepted);
 
 }  // namespace gs

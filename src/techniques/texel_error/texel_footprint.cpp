@@ -115,13 +115,21 @@ FootprintSample shadow_footprint(std::vector<FootprintSample> samples, float ign
 std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
                                   std::size_t receiver, float footprint, float largest, int size,
                                   const std::string &accepted_words) {
+  return texel_footprint_reason(scene, light, caster, receiver, footprint, largest, size,
+                                accepted_words) +
+         "; " + kCastsNoShadow;
+}
+
+std::string texel_footprint_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                   std::size_t receiver, float footprint, float largest, int size,
+                                   const std::string &accepted_words) {
   char pixels[64];
   std::snprintf(pixels, sizeof pixels, "%.1f screen pixels (the largest accepted is %.1f)",
                 static_cast<double>(footprint), static_cast<double>(largest));
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': a shadow texel spans " + pixels + " on '" + scene.objects[receiver].name +
          "', so the " + std::to_string(size) + "-texel shadow is too coarse for the screen (" +
-         accepted_words + "); it casts no shadow from this light";
+         accepted_words + ")";
 }
 
 }  // namespace gs

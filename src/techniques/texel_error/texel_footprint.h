@@ -85,12 +85,22 @@ FootprintSample texel_footprint(const FootprintSpace &space, const glm::vec3 &no
 // receiver). A zero sample when there is none.
 FootprintSample shadow_footprint(std::vector<FootprintSample> samples, float ignored_pixels);
 
+// How a refusal ends, after "; " or ", so ": the caster it names gets no shadow from the light
+// it names. Every refusal of these estimates' (texel_footprint_error, shadow_edge_error.h) and
+// the projected technique's step 1 (light_view_fit.cpp) says it in these words.
+constexpr const char *kCastsNoShadow = "it casts no shadow from this light";
+
 // The refusal of a shadow whose texels are too coarse for the screen (the projected techniques'
 // and the depth map's), naming the light, the caster, the receiver, the footprint and the
 // largest accepted, ending with `accepted_words` (accepted_size_words, shadow_edge_error.h: the
-// size that would be accepted, along the shadow's edges too).
+// size that would be accepted, along the shadow's edges too) and kCastsNoShadow. The reason
+// is the refusal without that end ("; " and kCastsNoShadow), for a note that the shadow was
+// drawn after all (ProjectedShadowOptions::grow_to_accepted).
 std::string texel_footprint_error(const Scene &scene, std::size_t light, std::size_t caster,
                                   std::size_t receiver, float footprint, float largest, int size,
                                   const std::string &accepted_words);
+std::string texel_footprint_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                   std::size_t receiver, float footprint, float largest, int size,
+                                   const std::string &accepted_words);
 
 }  // namespace gs
