@@ -5,6 +5,7 @@
 
 #include "techniques/projected/contact_strips.h"
 #include "techniques/projected/projected_shadow.h"
+#include "techniques/geometry/point_in_mesh.h"
 #include "techniques/geometry/projection.h"
 #include "techniques/light_passes/scene_pass.h"
 #include "scene/scene.h"
@@ -55,6 +56,7 @@ ContactStripRays::ContactStripRays(const LightView &view, const SceneObject &cas
     add(world, screen, w, camera_points, t, true, glm::vec2(-INFINITY), glm::vec2(INFINITY));
   }
   caster_faces_ = faces_.size();
+  camera_inside_ = closed && mesh_surrounds(world, mesh.triangles, camera);
   to_light_screen(receiver.world, screen, w);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     add(receiver.world, screen, w, {}, t, false, low, high);
@@ -118,15 +120,17 @@ bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
   // A face's NDC bounds widened by a little more than float rounding; the test is exact.
   const float slack = 1e-4f;
   // t runs from the point (0) to the camera (1); a triangle the point lies on is not between.
+  // One turned from the camera is culled by the scene pass and hides nothing (a crate's lid
+  // seen from inside the crate).
   return std::any_of(faces_.begin(), faces_.begin() + static_cast<std::ptrdiff_t>(caster_faces_), [&](const Face &f) {
     float t = 0.0f;
-    return !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
+    return f.camera_facing && !(p.w > 0.0f && (ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
                                         ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack)) &&
            meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < 1.0f;
   });
 }
 
-bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
+bool ContactStripRays::seen_in_shadow(const glm::vec2 &p) const {
   const float size = static_cast<float>(view_.size);
   const glm::vec2 ndc(p.x / size * 2.0f - 1.0f, 1.0f - p.y / size * 2.0f);
   const glm::vec4 far = clip_to_world_ * glm::vec4(ndc, 0.5f, 1.0f);
@@ -158,12 +162,13 @@ bool ContactStripRays::shadowed_outside(const glm::vec2 &p) const {
   for (const Hit &h : hits_) {
     if (h.face->caster || !h.face->camera_facing || !(h.t > on_cut)) continue;
     // Inside a closed caster when its next surface along the ray faces away from the light;
-    // outside when that one faces the light or there is none. An open one has no inside.
+    // outside when that one faces the light or there is none. An open one has no inside. A
+    // camera outside the caster sees nothing inside it.
     const Hit *next = nullptr;
     for (const Hit &c : hits_) {
       if (c.face->caster && c.t > h.t && (!next || c.t < next->t)) next = &c;
     }
-    if (closed_ && next && !next->face->light_facing) continue;
+    if (closed_ && !camera_inside_ && next && !next->face->light_facing) continue;
     if (!hidden_from_camera(view_.position + direction * h.t)) return true;
   }
   return false;

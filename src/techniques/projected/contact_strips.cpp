@@ -136,7 +136,7 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
             dropped |= kept_sides[static_cast<std::size_t>(p)] & near_sides;
           }
         }
-        if (dropped == 0 || !rays->shadowed_outside(at(s, d))) continue;
+        if (dropped == 0 || !rays->seen_in_shadow(at(s, d))) continue;
         for (int p = first; p <= last; ++p) {
           const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
           if (s >= s_low - reach && s <= s_high + reach) {
