@@ -43,8 +43,8 @@ class ContactStripRays {
   // the caster's front, as step 1 draws it) after passing through the caster, on a triangle
   // facing the camera with no caster triangle facing the camera between it and the camera
   // (the scene pass culls the others): a receiver point the camera may see in the caster's
-  // shadow, which no strip may light. Outside the caster, or inside it too when the camera is
-  // inside the closed caster.
+  // shadow, which no strip may light. Outside the caster, or inside it too when the camera's
+  // near plane meets the closed caster's inside.
   bool seen_in_shadow(const glm::vec2 &p) const;
 
  private:
@@ -72,14 +72,15 @@ class ContactStripRays {
   // The light's screen (texels) and light clip w of each of `world`'s points.
   void to_light_screen(const std::vector<glm::vec3> &world, std::vector<glm::vec2> &screen,
                        std::vector<float> &w) const;
-  // Whether a caster triangle facing the camera lies between world point `point` and it.
+  // Whether world point `point` lies nearer the camera than its near plane, or a caster
+  // triangle facing the camera lies between it and the near plane.
   bool hidden_from_camera(const glm::vec3 &point) const;
 
   const LightView &view_;
   bool closed_;
-  // The camera is inside the closed caster (mesh_surrounds): it sees the caster's inside, and
-  // no caster triangle hides from it a point there but for a fold of the caster.
-  bool camera_inside_ = false;
+  // The camera's near plane meets the inside of the closed caster (the camera inside it, or
+  // the near plane cutting into it): the camera may see a receiver point inside the caster.
+  bool sees_inside_ = false;
   glm::vec3 camera_;
   glm::mat4 camera_clip_, light_clip_, clip_to_world_;
   std::vector<Face> faces_;    // the caster's first, then the receiver's
