@@ -173,7 +173,7 @@ bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
   });
 }
 
-bool ContactStripRays::seen_in_shadow(const glm::vec2 &p) const {
+ContactStripRays::Seen ContactStripRays::seen_in_shadow(const glm::vec2 &p) const {
   const float size = static_cast<float>(view_.size);
   const glm::vec2 ndc(p.x / size * 2.0f - 1.0f, 1.0f - p.y / size * 2.0f);
   const glm::vec4 far = clip_to_world_ * glm::vec4(ndc, 0.5f, 1.0f);
@@ -199,6 +199,7 @@ bool ContactStripRays::seen_in_shadow(const glm::vec2 &p) const {
   // An open caster's cut: a receiver point behind its surface by less than a strip's depth
   // margin (light clip w) lies on the cut, in neither side's shadow (the sheet's base seen by
   // the camera, meshes_12312).
+  Seen seen = Seen::kNone;
   const float on_cut = closed_ ? first_front
                                : first_front + kContactStripDepthShare *
                                                    (w_at_light / w_per_t + first_front);
@@ -211,10 +212,13 @@ bool ContactStripRays::seen_in_shadow(const glm::vec2 &p) const {
     for (const Hit &c : hits_) {
       if (c.face->caster && c.t > h.t && (!next || c.t < next->t)) next = &c;
     }
-    if (closed_ && !sees_inside_ && next && !next->face->light_facing) continue;
-    if (!hidden_from_camera(view_.position + direction * h.t)) return true;
+    const bool inside = closed_ && next && !next->face->light_facing;
+    if (inside && !sees_inside_) continue;
+    if (hidden_from_camera(view_.position + direction * h.t)) continue;
+    if (!inside) return Seen::kOutside;
+    seen = Seen::kInside;
   }
-  return false;
+  return seen;
 }
 
 }  // namespace gs

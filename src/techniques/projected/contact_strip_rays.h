@@ -44,8 +44,9 @@ class ContactStripRays {
   // facing the camera with no caster triangle facing the camera between it and the camera
   // (the scene pass culls the others): a receiver point the camera may see in the caster's
   // shadow, which no strip may light. Outside the caster, or inside it too when the camera's
-  // near plane meets the closed caster's inside.
-  bool seen_in_shadow(const glm::vec2 &p) const;
+  // near plane meets the closed caster's inside (kInside: only such points were found).
+  enum class Seen { kNone, kOutside, kInside };
+  Seen seen_in_shadow(const glm::vec2 &p) const;
 
  private:
   struct Face {
