@@ -38,7 +38,8 @@ bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 
 // (elsewhere the surface's faces turned to the camera hide it). True when a corner lies inside,
 // or an edge of either passes through the other's triangles (the rectangle as two).
 bool near_plane_meets_inside(const std::vector<glm::vec3> &world,
-                             const std::vector<glm::uvec3> &triangles, const glm::mat4 &camera_clip) {
+                             const std::vector<glm::uvec3> &triangles,
+                             const glm::mat4 &camera_clip) {
   const glm::mat4 to_world = glm::inverse(camera_clip);
   glm::vec3 corner[4];
   for (int k = 0; k < 4; ++k) {
@@ -55,7 +56,8 @@ bool near_plane_meets_inside(const std::vector<glm::vec3> &world,
   for (const glm::uvec3 &t : triangles) {
     const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
     for (int half = 0; half < 2; ++half) {  // the rectangle's triangles 0 1 2 and 0 2 3
-      const glm::vec3 &r0 = corner[0], &r1 = corner[half == 0 ? 1 : 2], &r2 = corner[half == 0 ? 2 : 3];
+      const glm::vec3 &r0 = corner[0], &r1 = corner[half == 0 ? 1 : 2];
+      const glm::vec3 &r2 = corner[half == 0 ? 2 : 3];
       if (segment_meets(a, b, r0, r1, r2) || segment_meets(b, c, r0, r1, r2) ||
           segment_meets(c, a, r0, r1, r2)) {
         return true;
@@ -165,7 +167,8 @@ bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
   // t runs from the point (0) to the camera (1); a triangle the point lies on is not between.
   // One turned from the camera is culled by the scene pass and hides nothing (a crate's lid
   // seen from inside the crate).
-  return std::any_of(faces_.begin(), faces_.begin() + static_cast<std::ptrdiff_t>(caster_faces_), [&](const Face &f) {
+  const auto caster_end = faces_.begin() + static_cast<std::ptrdiff_t>(caster_faces_);
+  return std::any_of(faces_.begin(), caster_end, [&](const Face &f) {
     float t = 0.0f;
     return f.camera_facing && !(ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
                                 ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack) &&
