@@ -51,8 +51,12 @@ bool near_plane_meets_inside(const std::vector<glm::vec3> &world,
   // the inside, and the tests below are left out.
   glm::vec3 low(INFINITY), high(-INFINITY), near_low(INFINITY), near_high(-INFINITY);
   for (const glm::vec3 &p : world) low = glm::min(low, p), high = glm::max(high, p);
-  for (const glm::vec3 &c : corner) near_low = glm::min(near_low, c), near_high = glm::max(near_high, c);
-  if (glm::any(glm::lessThan(high, near_low)) || glm::any(glm::lessThan(near_high, low))) return false;
+  for (const glm::vec3 &c : corner) {
+    near_low = glm::min(near_low, c), near_high = glm::max(near_high, c);
+  }
+  if (glm::any(glm::lessThan(high, near_low)) || glm::any(glm::lessThan(near_high, low))) {
+    return false;
+  }
   if (mesh_surrounds(world, triangles, corner[0])) return true;
   auto segment_meets = [](const glm::vec3 &p, const glm::vec3 &q, const glm::vec3 &a,
                           const glm::vec3 &b, const glm::vec3 &c) {
