@@ -6,7 +6,10 @@
 // beyond the line where the caster's far side meets the receiver (grazing_9507: a cylinder
 // 0.42 m across through a dune under a light 0.2 m up, whose far side meets the dune within a
 // texel of the cut: 0.013 -> 0.111% interior false light), past an end of the cut, or on a
-// farther layer of the receiver. These rays find such points that a camera can see.
+// farther layer of the receiver. And a camera inside a closed caster sees the receiver's side
+// inside it, in shadow, which no camera outside can (stencil17_sv1: the camera in a crate whose
+// lid passes through a post; the strip lit the post under the lid, 0.262% interior false light).
+// These rays find such points that the camera can see.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -37,10 +40,13 @@ class ContactStripRays {
   void select(const glm::vec2 &low, const glm::vec2 &high);
 
   // Whether the light's ray through screen point p (texels) meets the receiver's mask (beyond
-  // the caster's front, as step 1 draws it) outside the caster after passing through it, on a
-  // triangle facing the camera with no caster triangle between it and the camera: a receiver
-  // point the camera may see in the caster's shadow, which no strip may light.
-  bool shadowed_outside(const glm::vec2 &p) const;
+  // the caster's front, as step 1 draws it) after passing through the caster, on a triangle
+  // facing the camera with no caster triangle facing the camera between it and the camera
+  // (the scene pass culls the others): a receiver point the camera may see in the caster's
+  // shadow, which no strip may light. Outside the caster, or inside it too when the camera's
+  // near plane meets the closed caster's inside (kInside: only such points were found).
+  enum class Seen { kNone, kOutside, kInside };
+  Seen seen_in_shadow(const glm::vec2 &p) const;
 
  private:
   struct Face {
@@ -67,11 +73,15 @@ class ContactStripRays {
   // The light's screen (texels) and light clip w of each of `world`'s points.
   void to_light_screen(const std::vector<glm::vec3> &world, std::vector<glm::vec2> &screen,
                        std::vector<float> &w) const;
-  // Whether a caster triangle lies between world point `point` and the camera.
+  // Whether world point `point` lies nearer the camera than its near plane, or a caster
+  // triangle facing the camera lies between it and the near plane.
   bool hidden_from_camera(const glm::vec3 &point) const;
 
   const LightView &view_;
   bool closed_;
+  // The camera's near plane meets the inside of the closed caster (the camera inside it, or
+  // the near plane cutting into it): the camera may see a receiver point inside the caster.
+  bool sees_inside_ = false;
   glm::vec3 camera_;
   glm::mat4 camera_clip_, light_clip_, clip_to_world_;
   std::vector<Face> faces_;    // the caster's first, then the receiver's

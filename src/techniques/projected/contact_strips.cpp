@@ -136,11 +136,21 @@ std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
             dropped |= kept_sides[static_cast<std::size_t>(p)] & near_sides;
           }
         }
-        if (dropped == 0 || !rays->shadowed_outside(at(s, d))) continue;
+        if (dropped == 0) continue;
+        const ContactStripRays::Seen seen = rays->seen_in_shadow(at(s, d));
+        if (seen == ContactStripRays::Seen::kNone) continue;
+        // A point seen inside the caster (the camera inside it) reads the other side's texels
+        // within its reach as light all the same: the caster lies behind the receiver there. Its
+        // own side's strip goes; the other's stays, which keeps step 1's coin toss along the cut
+        // out of them. A point on the cut itself drops neither (the rays beside it decide).
+        const int drop = seen == ContactStripRays::Seen::kOutside ? near_sides
+                         : d < 0.0f                                ? near_sides & 1
+                         : d > 0.0f                                ? near_sides & 2
+                                                                   : 0;
         for (int p = first; p <= last; ++p) {
           const float s_low = -k + piece * static_cast<float>(p), s_high = s_low + piece;
           if (s >= s_low - reach && s <= s_high + reach) {
-            kept_sides[static_cast<std::size_t>(p)] &= ~near_sides;
+            kept_sides[static_cast<std::size_t>(p)] &= ~drop;
           }
         }
       }

@@ -1,20 +1,22 @@
 // Where a closed caster passes through a receiver that masks its texture (pierced_receivers.h),
 // the receiver's surface meets the caster's light-facing surface along a line. On one side of it
 // the receiver lies outside the caster and the caster's surface is behind it (lit); on the other
-// the receiver lies inside the caster, just behind that surface (in shadow, but no camera sees
-// it). The masked texture holds that cut exactly, but a texel is wide: bilinear filtering (and a
-// point sample's texel) beside the line darkens the receiver's visible side up to a texel and a
-// half from it, which under a grazing light is many screen pixels of the receiver (issue 14,
-// grazing_6001: boxes and a fighter through each other in the dunes). And on the visible side
-// the caster's triangle lies behind the surface by less than a W-buffer code near the line, so
-// step 1's depth test there is a coin toss. Step 1 keeps that caster triangle out of a strip of
+// the receiver lies inside the caster, just behind that surface (in shadow, but no camera
+// outside the caster sees it). The masked texture holds that cut exactly, but a texel is wide:
+// bilinear filtering (and a point sample's texel) beside the line darkens the receiver's visible
+// side up to a texel and a half from it, which under a grazing light is many screen pixels of
+// the receiver (issue 14, grazing_6001: boxes and a fighter through each other in the dunes).
+// And on the visible side the caster's triangle lies behind the surface by less than a W-buffer
+// code near the line, so step 1's depth test there is a coin toss. Step 1 keeps that caster triangle out of a strip of
 // texels on both sides of the line, as deep as filtering reaches: the visible side reads no
 // covered texel from it. An open caster (a sheet, drawn from both sides) cut by the receiver is
 // the same but for its hidden side: the receiver there lies behind the sheet's part above it,
 // in shadow, and the strip is kept only where the camera sees none of it (the sheet hides it;
 // issue 14, meshes_12312: a crumpled sheet through dunes under a low light, 0.111% false shadow
-// on the dunes in front of it). Spaces: world in; the light's size x size Glide screen (texels,
-// y down) with 1/W from depth_oow out.
+// on the dunes in front of it). A closed caster's hidden side is seen too when the camera's
+// near plane meets the caster's inside (the camera in a crate, stencil17_sv1): there the strip
+// on that side is kept only where the camera sees none of it. Spaces: world in; the light's
+// size x size Glide screen (texels, y down) with 1/W from depth_oow out.
 #pragma once
 
 #include <glide.h>
@@ -68,8 +70,8 @@ constexpr float kContactStripDepthShare = 2e-3f;
 // keeps only that triangle's plane out: a farther part of the caster in front of the receiver
 // still shadows it. Only the parts of a strip (pieces about a texel long, each side of the cut
 // apart) with no point of `receiver` within the filter's reach that the camera (at `camera`,
-// world; `camera_clip` world to its clip space) may see in `caster`'s shadow outside it are kept (contact_strip_rays.h): a strip
-// lights no receiver point the caster shadows.
+// world; `camera_clip` world to its clip space) may see in `caster`'s shadow are kept
+// (contact_strip_rays.h): a strip lights no receiver point the caster shadows that is seen.
 std::vector<std::array<GrVertex, 4>> contact_strips(const LightView &view,
                                                     const std::vector<ContactSegment> &contacts,
                                                     const SceneObject &caster, bool closed,
