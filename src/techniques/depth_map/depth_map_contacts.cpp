@@ -195,10 +195,8 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
               const glm::dvec4 seen = camera_clip * glm::dvec4(point, 1.0);
               if (!(seen.w > 0.0) || std::abs(seen.x) > seen.w || std::abs(seen.y) > seen.w) break;
               // Counted where the camera sees it past the caster and the light shines on it.
-              bool visible = glm::dot(sample.normal, camera - point) > 0.0;
-              for (std::size_t m = 0; m < bodies.size() && visible; ++m) {
-                visible = !blocks(bodies[m], camera, point - camera);
-              }
+              const bool visible = glm::dot(sample.normal, camera - point) > 0.0 &&
+                                   seen_past_near_plane(bodies, camera_clip, camera, point);
               // Where another caster or the receiver itself shadows it too, neither the truth
               // nor the map turns on this caster alone.
               bool alone = true;

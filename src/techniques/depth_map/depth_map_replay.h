@@ -208,6 +208,27 @@ inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
   return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5);
 }
 
+// Whether no body of `bodies` hides `point` (world) from the camera at `camera` (world), whose
+// `camera_clip` maps world to its clip space: the segment from the point to where it crosses the
+// near plane (clip z + w = 0, linear along it; negative at the camera) is tested, as a face
+// nearer than that plane is clipped away and hides nothing (a camera whose near plane cuts into
+// a hut's wall sees inside it). False for a point nearer than the near plane.
+inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::dmat4 &camera_clip,
+                                 const dvec3 &camera, const dvec3 &point) {
+  const double near_point = [&] {
+    const glm::dvec4 p = camera_clip * glm::dvec4(point, 1.0);
+    return p.z + p.w;
+  }();
+  if (!(near_point > 0.0)) return false;
+  const glm::dvec4 eye = camera_clip * glm::dvec4(camera, 1.0);
+  const double t_near = near_point / (near_point - (eye.z + eye.w));  // 0 point .. 1 camera
+  const dvec3 start = point + (camera - point) * t_near;
+  for (const RayBody &body : bodies) {
+    if (blocks(body, start, point - start)) return false;
+  }
+  return true;
+}
+
 // Every object of `meshes` (world) as a ray body, in their order.
 inline std::vector<RayBody> ray_bodies(const std::vector<WorldMesh> &meshes) {
   std::vector<RayBody> bodies(meshes.size());

@@ -147,11 +147,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // 2 counted).
   std::vector<GrazedSample> kept;
   for (const GrazedSample &sample : samples) {
-    bool visible = true;
-    for (std::size_t m = 0; m < bodies.size() && visible; ++m) {
-      visible = !blocks(bodies[m], camera, sample.point - camera);
-    }
-    if (visible && !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle)))
+    if (seen_past_near_plane(bodies, camera_clip, camera, sample.point) && !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle)))
       kept.push_back(sample);
   }
   std::vector<int> band(kept.size(), 0);
