@@ -45,8 +45,9 @@ void planar::clip_keep(SmallPolygon &polygon, const glm::vec3 &normal, float off
 namespace {
 
 using planar::clip_keep, planar::hidden_regions, planar::subtract_hidden;
-using planar::CasterTriangle, planar::DirectionBox, planar::HiddenRegion, planar::kEmptyBox,
-    planar::kNearLightHeight, planar::PlanarCaster, planar::ReceiverTriangle, planar::SmallPolygon;
+using planar::CameraCut, planar::CasterTriangle, planar::DirectionBox, planar::HiddenRegion,
+    planar::kEmptyBox, planar::kNearLightHeight, planar::PlanarCaster, planar::ReceiverTriangle,
+    planar::SmallPolygon;
 
 // The thinnest cut, for a caster passing closer to the light than a millionth of the receiver's
 // reach: nearer still, the projection's rounding would move the shadow by more than it holds.
@@ -273,6 +274,13 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
   // The tangent of a pixel's angle through the camera (vertical field of view; square pixels).
   const float pixel = 2.0f * std::tan(glm::radians(scene.camera.fov_degrees) * 0.5f) /
                       static_cast<float>(std::max(scene.height, 1));
+  // The camera's position and near plane (world), as projection.cpp's view matrix looks.
+  CameraCut camera_cut;
+  camera_cut.position = scene.camera.position;
+  const glm::vec3 look = scene.camera.target - scene.camera.position;
+  if (glm::length(look) > 0.0f) camera_cut.forward = glm::normalize(look);
+  camera_cut.near_offset =
+      glm::dot(camera_cut.forward, camera_cut.position) + scene.camera.near_plane;
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const SpotLight &light = scene.lights[l];
     if (light.is_projector()) continue;  // slides cast no shadows
@@ -314,7 +322,7 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
               cast_on(c, r, light.position, beam.regions[piece], polygon, scratch);
               if (polygon.n < 3) continue;
               if (!hidden_known) {
-                hidden_regions(caster, r, scene.camera.position, pixel, hidden, polygon_b,
+                hidden_regions(caster, r, camera_cut, pixel, hidden, polygon_b,
                                scratch);
                 hidden_known = true;
               }

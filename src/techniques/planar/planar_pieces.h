@@ -102,15 +102,24 @@ struct HiddenRegion {
   std::size_t n = 0;
 };
 
+// The camera as the hidden regions need it, world space: its position, and its near plane as the
+// points p with dot(forward, p) >= near_offset (forward: unit, from the camera to its target).
+struct CameraCut {
+  glm::vec3 position{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};
+  float near_offset = 0.0f;
+};
+
 // `pieces` less `region` (planar_hidden.cpp).
 void subtract_hidden(std::vector<SmallPolygon> &pieces, const HiddenRegion &region,
                      std::vector<SmallPolygon> &kept, SmallPolygon &scratch);
 
 // Every region `caster`'s drawn surface hides of receiver triangle `r`'s plane where it passes
-// through it (none when the camera is behind the plane: the covers there are culled). `pixel`
-// is the tangent of a pixel's angle through the camera.
+// through it (none when the camera is behind the plane: the covers there are culled), its part
+// nearer than the camera's near plane left out. `pixel` is the tangent of a pixel's angle
+// through the camera.
 void hidden_regions(const PlanarCaster &caster, const ReceiverTriangle &r,
-                    const glm::vec3 &camera, float pixel, std::vector<HiddenRegion> &hidden,
+                    const CameraCut &camera, float pixel, std::vector<HiddenRegion> &hidden,
                     SmallPolygon &polygon, SmallPolygon &scratch);
 
 }  // namespace gs::planar
