@@ -13,38 +13,19 @@
 
 #include <gtest/gtest.h>
 
-#include <string>
-
 using namespace hard_cases;  // the checks of hard_case_checks.h
-
-namespace {
-
-// The depth map on the scene of `file`: within the interior budget, or refused for light 0 and
-// the hut, by name.
-void expect_depth_map_right_or_refused_for_the_hut(const std::string &file) {
-  const gs::Scene scene = load(file);
-  const Truth truth = truth_of(scene);
-  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
-  const Outcome o = run("depth-map", scene, truth);
-  report(file + " depth-map", o);
-  expect_clean_glide("depth-map", o);
-  if (!o.refusals.empty()) {
-    EXPECT_NE(o.refusals[0].find("light 0 and 'hut'"), std::string::npos) << o.refusals[0];
-    return;
-  }
-  EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-      << file << ": served over the budget";
-}
-
-}  // namespace
 
 // Before (773e10d): 0.511% interior error (1.208% misclassified), served.
 TEST(HardCases, DepthMapNeverServesAPostUnderAHutRoofSeenThroughTheNearPlanesCut) {
-  expect_depth_map_right_or_refused_for_the_hut("audit/sv18_near_plane_in_hut_post_through_roof.json");
+  expect_these_right_or_refused("audit/sv18_near_plane_in_hut_post_through_roof.json",
+                                load("audit/sv18_near_plane_in_hut_post_through_roof.json"),
+                                {"depth-map"}, {{"depth-map", "light 0 and 'hut'"}}, true);
 }
 
 // The camera at the west wall, nearer it, with a nearer near plane, a wider view, a thinner post
 // and the light from the west. Before (773e10d): 0.489% interior error, served.
 TEST(HardCases, DepthMapNeverServesAPostUnderAHutRoofSeenThroughTheWestWallsCut) {
-  expect_depth_map_right_or_refused_for_the_hut("audit/hutdm_near_plane_in_hut_west_wall.json");
+  expect_these_right_or_refused("audit/hutdm_near_plane_in_hut_west_wall.json",
+                                load("audit/hutdm_near_plane_in_hut_west_wall.json"),
+                                {"depth-map"}, {{"depth-map", "light 0 and 'hut'"}}, true);
 }

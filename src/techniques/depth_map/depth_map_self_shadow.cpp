@@ -147,8 +147,10 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // 2 counted).
   std::vector<GrazedSample> kept;
   for (const GrazedSample &sample : samples) {
-    if (seen_past_near_plane(bodies, camera_clip, camera, sample.point) && !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle)))
+    if (seen_past_near_plane(bodies, camera_clip, camera, sample.point) &&
+        !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle))) {
       kept.push_back(sample);
+    }
   }
   std::vector<int> band(kept.size(), 0);
   // Whether a wrong pixel here is the band of a true shadow's edge (another caster's, or the
