@@ -20,7 +20,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,11 +31,16 @@ using namespace hard_cases;  // the checks of hard_case_checks.h
 
 namespace {
 
-// One object's triangles in world space, double.
+// One object's triangles in world space, double, in runs of kRun consecutive triangles, each
+// with a bounding sphere (a mesh's triangles lie mostly near their neighbours in the list), so a
+// line is met against only the runs it passes near.
+constexpr std::size_t kRun = 32;
+
 struct Body {
   bool casts = false;
   std::vector<glm::dvec3> position;
   std::vector<glm::uvec3> triangle;
+  std::vector<glm::dvec4> run;  // centre, radius
 };
 
 std::vector<Body> bodies_of(const gs::Scene &scene) {
@@ -45,6 +52,15 @@ std::vector<Body> bodies_of(const gs::Scene &scene) {
     for (const glm::vec3 &p : object.mesh.positions)
       body.position.emplace_back(model * glm::dvec4(glm::dvec3(p), 1.0));
     body.triangle = object.mesh.triangles;
+    for (std::size_t first = 0; first < body.triangle.size(); first += kRun) {
+      const std::size_t end = std::min(first + kRun, body.triangle.size());
+      glm::dvec3 low(std::numeric_limits<double>::max()), high(-low);
+      for (std::size_t t = first; t < end; ++t)
+        for (int k = 0; k < 3; ++k)
+          low = glm::min(low, body.position[body.triangle[t][k]]),
+          high = glm::max(high, body.position[body.triangle[t][k]]);
+      body.run.emplace_back(0.5 * (low + high), 0.5 * glm::length(high - low));
+    }
     bodies.push_back(std::move(body));
   }
   return bodies;
@@ -66,6 +82,25 @@ std::optional<double> meet(const Body &body, const glm::uvec3 &t, const glm::dve
   const double v = glm::dot(dir, q) / det;
   if (u < 0.0 || v < 0.0 || u + v > 1.0) return std::nullopt;
   return glm::dot(e2, q) / det;
+}
+
+// The smallest t in (from, to) where the line meets `body` (front faces only if `front_only`).
+std::optional<double> first_meet(const Body &body, const glm::dvec3 &origin,
+                                 const glm::dvec3 &dir, double from, double to,
+                                 bool front_only) {
+  std::optional<double> nearest;
+  for (std::size_t r = 0; r < body.run.size(); ++r) {
+    const glm::dvec3 centre(body.run[r]);
+    const double along = glm::dot(centre - origin, dir);
+    const glm::dvec3 closest = origin + dir * std::clamp(along, from, to);
+    if (glm::length(centre - closest) > body.run[r].w) continue;
+    const std::size_t end = std::min((r + 1) * kRun, body.triangle.size());
+    for (std::size_t t = r * kRun; t < end; ++t) {
+      const std::optional<double> at = meet(body, body.triangle[t], origin, dir, front_only);
+      if (at && *at > from && *at < to && (!nearest || *at < *nearest)) nearest = at;
+    }
+  }
+  return nearest;
 }
 
 // The truth with the light's reach decided exactly: per pixel, the visible point (the pixel
@@ -97,11 +132,8 @@ ExactTruth exact_truth(const gs::Scene &scene, const Truth &truth) {
       const glm::dvec4 far_h = to_world * glm::dvec4(x, y, 1.0, 1.0);
       const glm::dvec3 origin = glm::dvec3(near_h) / near_h.w;
       const glm::dvec3 dir = glm::normalize(glm::dvec3(far_h) / far_h.w - origin);
-      std::optional<double> nearest;
-      for (const glm::uvec3 &t : bodies[object].triangle) {
-        const std::optional<double> at = meet(bodies[object], t, origin, dir, true);
-        if (at && *at > 0.0 && (!nearest || *at < *nearest)) nearest = at;
-      }
+      const double far = glm::length(glm::dvec3(far_h) / far_h.w - origin);
+      const std::optional<double> nearest = first_meet(bodies[object], origin, dir, 0.0, far, true);
       if (!nearest) continue;
       const glm::dvec3 point = origin + dir * *nearest;
       bool by_other = false, by_self = false;
@@ -112,15 +144,8 @@ ExactTruth exact_truth(const gs::Scene &scene, const Truth &truth) {
         const glm::dvec3 toward = to_light / distance;
         for (std::size_t b = 0; b < bodies.size(); ++b) {
           if (!bodies[b].casts) continue;
-          bool crossed = false;
-          for (const glm::uvec3 &t : bodies[b].triangle) {
-            const std::optional<double> at = meet(bodies[b], t, point, toward, false);
-            if (at && *at > 1e-6 && *at < distance) {
-              crossed = true;
-              break;
-            }
-          }
-          if (crossed) (static_cast<int>(b) == object ? by_self : by_other) = true;
+          if (first_meet(bodies[b], point, toward, 1e-6, distance, false))
+            (static_cast<int>(b) == object ? by_self : by_other) = true;
         }
       }
       const std::uint8_t shadow = by_other ? 1 : 0, self_only = by_self && !by_other ? 1 : 0;
