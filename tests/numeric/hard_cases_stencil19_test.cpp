@@ -15,7 +15,6 @@
 // Scenes in tests/hard_cases/audit (stencil19_*; README, "A glove's shadow on its forearm").
 #include "hard_case_checks.h"
 
-#include "scene/lighting.h"
 #include "techniques/geometry/projection.h"
 
 #include <gtest/gtest.h>
@@ -133,7 +132,8 @@ ExactTruth exact_truth(const gs::Scene &scene, const Truth &truth) {
       const glm::dvec3 origin = glm::dvec3(near_h) / near_h.w;
       const glm::dvec3 dir = glm::normalize(glm::dvec3(far_h) / far_h.w - origin);
       const double far = glm::length(glm::dvec3(far_h) / far_h.w - origin);
-      const std::optional<double> nearest = first_meet(bodies[object], origin, dir, 0.0, far, true);
+      const std::optional<double> nearest =
+          first_meet(bodies[object], origin, dir, 0.0, far, true);
       if (!nearest) continue;
       const glm::dvec3 point = origin + dir * *nearest;
       bool by_other = false, by_self = false;
