@@ -9,12 +9,18 @@
 // is squeezed to 1% of its width) and a box's shadow 0.3 px tall ran along the centres of its
 // row within 0.03 px (/work/aud18 near-camera-behind_18652: the snap left 8 of its 14 pixels
 // lit, on the floor's top row against the sky, where no neighbour shows they lie by an edge:
-// 0.150% of the receiver pixels as interior). A rectangle per row, from a quarter pixel above
-// the row's centres to a quarter below, with its sides at the polygon's exact crossings of that
-// row, has its top and bottom on the snap grid: the snap moves only its sides, by 1/32 px along
-// the row whatever the edges' slope, and it holds exactly the centres the polygon holds.
-// Neighbouring polygons compute a shared edge's crossing from the same end, so their rectangles
-// meet at the same snapped x and leave no crack.
+// 0.150% of the receiver pixels as interior). So step 3 finds, row by row, the pixels whose
+// centres the polygon holds (its exact crossings of the row's centre line) and draws each row's
+// run as a rectangle on pixel boundaries, which the snap leaves where it is.
+// The receiver triangle was snapped too, and at such angles the pixels it drew are not those
+// whose centres it holds: a centre a hair inside one floor triangle was drawn by the next, whose
+// depth the first one's cover failed. So the run is also cut to the pixels the triangle drew (its
+// snapped corners' crossings, ties included: a tie lies on an edge both triangles share, where
+// their depths agree), and step 1 casts each polygon on the triangle with its edges moved out by
+// what a sixteenth of a pixel spans there (planar_casting.cpp), so the pixels it drew beyond its
+// exact edges get the shadow that falls on its plane there.
+// Neighbouring polygons compute a shared edge's crossing from the same end, so their runs meet
+// (or overlap by the pixel whose centre lies on it, which the seals darken once).
 #pragma once
 
 #include <glide.h>
