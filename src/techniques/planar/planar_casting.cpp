@@ -130,8 +130,10 @@ PlanarCaster prepare_caster(const Scene &scene, std::size_t index, const SpotLig
   return caster;
 }
 
+// `camera` (world) and `pixel` (the tangent of a pixel's angle) size each triangle's slack.
 Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam &beam,
-                          const SpotLight &light, const glm::mat4 &light_view) {
+                          const SpotLight &light, const glm::mat4 &light_view,
+                          const glm::vec3 &camera, float pixel) {
   const SceneObject &object = scene.objects[index];
   const LitVertices lit = light_vertices(object.mesh, object.model_to_world, light_view);
   // Per vertex: the lit piece of the beam that surely holds it (-1: none), and which outer
@@ -172,11 +174,25 @@ Receiver prepare_receiver(const Scene &scene, std::size_t index, const LightBeam
     for (const glm::vec3 &corner : r.corner) {
       r.light_reach = std::max(r.light_reach, glm::distance(corner, light.position));
     }
+    // The edges moved out by what a sixteenth of a pixel (the snap's step) spans on the plane at
+    // its most foreshortened, at the corner where that is most, and by no more than the longest
+    // edge: the triangle as the scene pass drew it, its corners snapped, lies within them, and
+    // step 3 cuts the polygons to the pixels it drew (planar_shadow.cpp).
+    float slack = 0.0f, longest = 0.0f;
+    for (std::size_t e = 0; e < 3; ++e) {
+      const glm::vec3 to = r.corner[e] - camera;
+      const float distance = glm::length(to);
+      const float sine = std::abs(glm::dot(r.normal, to)) / distance;
+      slack = std::max(slack, sine > 0.0f ? distance * pixel / (16.0f * sine) : INFINITY);
+      longest = std::max(longest, glm::distance(r.corner[e], r.corner[(e + 1) % 3]));
+    }
+    slack = std::min(slack, longest);
     for (int e = 0; e < 3; ++e) {
       const glm::vec3 &from = r.corner[static_cast<std::size_t>(e)];
       const glm::vec3 &to = r.corner[static_cast<std::size_t>((e + 1) % 3)];
       r.inward[static_cast<std::size_t>(e)] = glm::cross(r.normal, to - from);
-      r.inward_offset[static_cast<std::size_t>(e)] = glm::dot(r.inward[static_cast<std::size_t>(e)], from);
+      r.inward_offset[static_cast<std::size_t>(e)] =
+          glm::dot(r.inward[static_cast<std::size_t>(e)], from) - slack * glm::length(to - from);
     }
     r.box = triangle_box(lit, t);
     receiver.box.include(r.box);
@@ -291,7 +307,8 @@ PlanarShadows project_and_clip_casters(const Scene &scene) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       if (scene.objects[i].casts_shadow) casters.push_back(prepare_caster(scene, i, light, light_view));
       if (scene.objects[i].receives_shadow) {
-        receivers.push_back(prepare_receiver(scene, i, beam, light, light_view));
+        receivers.push_back(
+            prepare_receiver(scene, i, beam, light, light_view, camera_cut.position, pixel));
       }
     }
     ShadowPolygons &out = result.lights[l];

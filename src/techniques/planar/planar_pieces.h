@@ -71,6 +71,8 @@ struct ReceiverTriangle {
   double exact_light_height = 0.0;  // metres (> 0)
   float light_reach = 0.0f;         // metres from the light to the farthest corner
   std::array<glm::vec3, 3> inward;  // world, in the plane: into the triangle from edge i, i+1
+  // dot(inward[i], p) >= inward_offset[i] inside edge i moved out by the triangle's snap slack
+  // (what a sixteenth of a pixel spans on it: planar_casting.cpp's prepare_receiver).
   std::array<float, 3> inward_offset{};
   DirectionBox box;
   bool beyond_beam = false;         // not wholly inside the light's inner beam: clip to it

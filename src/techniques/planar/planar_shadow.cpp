@@ -10,6 +10,7 @@
 #include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
 #include "techniques/light_passes/scene_pass.h"
+#include "techniques/planar/planar_rows.h"
 
 #include <glide.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -227,7 +228,9 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
                           const PlanarShadows &shadows, GrColor_t color, bool opaque) {
   set_polygon_state(color);
   std::vector<ClipVertex> polygon, receiver_polygon, scratch;
-  std::vector<GrVertex> screen, receiver_screen, short_part, past_part;
+  std::vector<GrVertex> screen, receiver_screen, short_part, past_part, rectangle;
+  std::vector<GrVertex> drawn;
+  std::vector<planar::RowSpan> spans, drawn_spans;
   bool sealed = false;  // some light's seals are in the depth buffer
   for (std::size_t l = 0; l < shadows.lights.size(); ++l) {
     const ShadowPolygons &light = shadows.lights[l];
@@ -280,19 +283,57 @@ void draw_shadow_polygons(const Scene &scene, const FrameGeometry &frame,
         }
       }
       if (!has_plane) continue;  // edge-on: the scene pass drew nothing of it either
-      for (GrVertex &v : screen) {
-        v.x = snap_to_subpixel(v.x), v.y = snap_to_subpixel(v.y);
-        v.oow = static_cast<float>(plane.at(v.x, v.y));
+      // The receiver triangle as the scene pass drew it, its corners snapped.
+      drawn.clear();
+      if (!clipped) {
+        for (unsigned index : {t.x, t.y, t.z}) drawn.push_back(receiver.screen[index]);
+      } else {
+        drawn = receiver_screen;
       }
+      for (GrVertex &v : drawn) v.x = snap_to_subpixel(v.x), v.y = snap_to_subpixel(v.y);
       // The gradient's share only where the shim clipped the receiver to the window.
       const float strays = past_window ? 1.0f : 0.0f;
-      clip_to_window(screen, plane, scene, receiver_screen);
-      if (screen.size() < 3) continue;
       const Level cover = {clipped ? kClippedCoverCodes : kCoverCodes, strays * kCoverPixels};
       const Level seal = {cover.codes + kCoverSealCodes, cover.pixels};
-      draw_at_level(screen, plane, cover, alpha, short_part, past_part);
-      draw_at_level(screen, plane, seal, 0.0f, short_part, past_part);
-      sealed = true;
+      // Drawn a row of pixel centres at a time (planar_rows.h), each rectangle wound as the
+      // polygon is on screen (its shoelace sum's sign: positive is the order of a rectangle's
+      // corners listed below, y down).
+      double area = 0.0;
+      for (std::size_t i = 0; i < screen.size(); ++i) {
+        const GrVertex &a = screen[i], &b = screen[(i + 1) % screen.size()];
+        area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+      }
+      planar::row_spans(screen, scene.height, spans);
+      planar::row_spans(drawn, scene.height, drawn_spans);
+      for (const planar::RowSpan &span : spans) {
+        // The pixels of the row whose centres (x + 0.5) lie from span.left to span.right, and
+        // that the receiver triangle drew (its snapped edges' crossings, ties included).
+        if (drawn_spans.empty() || span.row < drawn_spans.front().row ||
+            span.row > drawn_spans.back().row) {
+          continue;
+        }
+        const planar::RowSpan &receiver_span =
+            drawn_spans[static_cast<std::size_t>(span.row - drawn_spans.front().row)];
+        const double first = std::max(
+            {std::ceil(span.left - 0.5), std::ceil(receiver_span.left - 0.5), 0.0});
+        const double last = std::min({std::floor(span.right - 0.5),
+                                      std::floor(receiver_span.right - 0.5), scene.width - 1.0});
+        if (first > last) continue;
+        const float left = static_cast<float>(first), right = static_cast<float>(last + 1.0);
+        const float top = static_cast<float>(span.row), bottom = top + 1.0f;
+        rectangle.assign(4, screen[0]);
+        const float xs[4] = {left, right, right, left}, ys[4] = {top, top, bottom, bottom};
+        for (std::size_t k = 0; k < 4; ++k) {
+          GrVertex &v = rectangle[area > 0.0 ? k : 3 - k];
+          v.x = xs[k], v.y = ys[k];
+          v.oow = static_cast<float>(plane.at(v.x, v.y));
+        }
+        clip_to_window(rectangle, plane, scene, receiver_screen);
+        if (rectangle.size() < 3) continue;
+        draw_at_level(rectangle, plane, cover, alpha, short_part, past_part);
+        draw_at_level(rectangle, plane, seal, 0.0f, short_part, past_part);
+        sealed = true;
+      }
     }
   }
   set_scene_state();
