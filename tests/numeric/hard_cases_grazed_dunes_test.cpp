@@ -34,19 +34,20 @@ gs::Scene grazed_dunes(bool higher_dunes) {
   return scene;
 }
 
-// With the estimates off the map is measured over the budget: the case can fail (23 px of
-// 20398 at 0.05 m, 23 of 20211 at 0.07 m).
+// With the estimates off the map is measured over the budget on the audit's frame: the case can
+// fail (23 px of 20393, 0.113%). With the dunes at 0.07 m it was 23 px of 20211 (0.114%) while
+// the truth started its shadow rays off the surface along the normal; from the segment to the
+// light it is 16 of 20178 (0.079%), so that frame no longer shows the check is needed, though the
+// check still refuses it (below).
 TEST(HardCases, DepthMapOnGrazedDunesWithTheCheckOffIsOverBudget) {
-  for (const bool higher : {false, true}) {
-    const gs::Scene scene = grazed_dunes(higher);
-    const Truth truth = truth_of(scene);
-    gs::TechniqueOptions options;
-    options.depth_map_largest_footprint_px = INFINITY;
-    const Outcome o = run("depth-map", scene, truth, options);
-    report(kGrazedDunesFile + (higher ? " higher dunes" : "") + " depth-map check off", o);
-    EXPECT_TRUE(o.refusals.empty());
-    EXPECT_GT(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget);
-  }
+  const gs::Scene scene = grazed_dunes(false);
+  const Truth truth = truth_of(scene);
+  gs::TechniqueOptions options;
+  options.depth_map_largest_footprint_px = INFINITY;
+  const Outcome o = run("depth-map", scene, truth, options);
+  report(kGrazedDunesFile + " depth-map check off", o);
+  EXPECT_TRUE(o.refusals.empty());
+  EXPECT_GT(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget);
 }
 
 // At 256 texels the map refuses the dunes by name and names 512, where it is served and right

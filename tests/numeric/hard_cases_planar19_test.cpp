@@ -17,7 +17,7 @@ using namespace hard_cases;  // the checks of hard_case_checks.h
 namespace {
 
 // Planar within the budget, not refusing, on `file`. hard_case_checks.h's
-// expect_these_right_or_refused wants over 200 shadowed pixels; these frames hold 25 to 179 (the
+// expect_these_right_or_refused wants over 150 shadowed pixels; these frames hold 25 to 179 (the
 // floor is a strip), so each pixel weighs 0.05% to 0.25% of the receiver pixels, and 0.1% is one
 // or two of them.
 void expect_planar_right(const std::string &file) {
