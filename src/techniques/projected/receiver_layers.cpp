@@ -16,6 +16,8 @@ namespace {
 constexpr int kLayerGrid = 32;              // cells a side of the light's screen, NDC [-1, 1]
 constexpr float kSampleTexels = 4.0f;  // caster edges are sampled at least this often
 constexpr int kMostSamplesPerEdge = 64;
+// A texture coarser than this has its edges' samples split further, as if it were this size.
+constexpr int kSampleViewSize = 256;
 
 struct EdgeSample {
   glm::vec2 ndc;
@@ -141,12 +143,18 @@ ReceiverLayers receiver_layers(const Scene &scene, const FrameGeometry &frame, s
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   const float texels_per_ndc = 0.5f * static_cast<float>(view.size);
+  // A coarse texture's spacing (4 of its texels, 16 of a 256 view at 64) steps over a caster
+  // part lying between two layers that a finer one finds (sunk-narrow-cones_17223, issue 14):
+  // its spacing split `finer` times, which keeps its own samples (spacing the samples by the
+  // finer view alone moves them, and lost such a part that the coarse spacing had found).
+  const int finer = std::max(1, kSampleViewSize / std::max(view.size, 1));
   for (const std::uint64_t edge : edges) {
     const glm::vec4 &p = clip[edge >> 32], &q = clip[edge & 0xffffffffu];
     if (!(p.w > 0.0f && q.w > 0.0f)) continue;
     const float texels = glm::length(glm::vec2(p) / p.w - glm::vec2(q) / q.w) * texels_per_ndc;
     const int steps =
-        std::clamp(static_cast<int>(std::ceil(texels / kSampleTexels)), 1, kMostSamplesPerEdge);
+        std::clamp(static_cast<int>(std::ceil(texels / kSampleTexels)), 1, kMostSamplesPerEdge) *
+        finer;
     for (int k = 1; k < steps; ++k) {
       add_sample(p + (q - p) * (static_cast<float>(k) / static_cast<float>(steps)));
     }
