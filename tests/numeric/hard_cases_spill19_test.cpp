@@ -61,3 +61,14 @@ TEST(HardCases, ProjectedCylinderCutThroughASeenDuneLightTurnedIsRightOrRefused)
 TEST(HardCases, ProjectedCylinderCutThroughASeenDuneLargerScreenIsRightOrRefused) {
   expect_projected_right_or_refused_naming("audit/spill19_dunes_cut_screen_320.json", "cylinder2");
 }
+
+// The twelfth audit's meshes_18307: an open bowl half-buried in the dunes under a low light. Its
+// faces turned from the light are drawn too (an open caster), and their cut through the dunes
+// strays as the others do. Before: 0.111% and 0.122% at 880e870 (0.171% and 0.185% at
+// 6a07ceb); at 128 texels 0.204% and 0.212%.
+TEST(HardCases, ProjectedOpenBowlHalfBuriedInDunesIsRightOrRefused) {
+  expect_projected_right_or_refused_naming("audit/spill19_bowl_half_buried_audit18307.json",
+                                           "bowl0_loose");
+  expect_projected_right_or_refused_naming("audit/spill19_bowl_half_buried_128_texels.json",
+                                           "bowl0_loose");
+}

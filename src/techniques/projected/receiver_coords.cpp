@@ -182,7 +182,9 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
         strips.push_back({glm::vec2(strip[0].x, strip[0].y), glm::vec2(strip[1].x, strip[1].y),
                           glm::vec2(strip[2].x, strip[2].y), glm::vec2(strip[3].x, strip[3].y)});
       }
-      cuts.emplace(scene.objects[caster], light.position, std::move(strips));
+      // An open caster (one with a rim) is drawn from both sides: each face cuts as the light
+      // sees it.
+      cuts.emplace(scene.objects[caster], light.position, std::move(strips), !view.rims.empty());
     }
     add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
                           segments, candidates, options.bilinear && !options.chroma_key,

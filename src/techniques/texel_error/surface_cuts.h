@@ -26,10 +26,12 @@ namespace gs {
 
 class SurfaceCuts {
  public:
-  // `caster` (its caster_mesh, placed by model_to_world) lit from `light_position` (world), and
-  // the contact strips step 1 kept (each a convex quad in the light's screen, texels).
+  // `caster` (its caster_mesh, placed by model_to_world) lit from `light_position` (world), the
+  // contact strips step 1 kept (each a convex quad in the light's screen, texels), and whether
+  // the caster is `open` (step 1 draws it from both sides, so every face is lit as the light
+  // sees it: a half-buried open bowl, issue 14's meshes_18307).
   SurfaceCuts(const SceneObject &caster, const glm::vec3 &light_position,
-              std::vector<std::array<glm::vec2, 4>> kept_strips)
+              std::vector<std::array<glm::vec2, 4>> kept_strips, bool open = false)
       : strips_(std::move(kept_strips)) {
     const Mesh &mesh = caster_mesh(caster);
     std::vector<glm::vec3> world(mesh.positions.size());
@@ -39,12 +41,13 @@ class SurfaceCuts {
     glm::vec3 low(INFINITY), high(-INFINITY);
     for (const glm::vec3 &p : world) low = glm::min(low, p), high = glm::max(high, p);
     tolerance_ = 1e-4f * glm::length(high - low);  // metres: float rounding of the caster's size
-    // Only the triangles facing the light by their winding: the faces step 1 draws of a closed
-    // caster (an open one's turned away are left out, as complete_cuts leaves them).
+    // Only the triangles facing the light by their winding, the faces step 1 draws of a closed
+    // caster; an open one's turned away too, their normal turned to the light.
     for (const glm::uvec3 &t : mesh.triangles) {
       Face face{{world[t.x], world[t.y], world[t.z]}, glm::vec3(0.0f), glm::vec3(INFINITY),
                 glm::vec3(-INFINITY)};
       face.normal = glm::cross(face.corner[1] - face.corner[0], face.corner[2] - face.corner[0]);
+      if (open && glm::dot(face.normal, light_position - face.corner[0]) < 0.0f) face.normal = -face.normal;
       if (!(glm::dot(face.normal, light_position - face.corner[0]) > 0.0f)) continue;
       for (const glm::vec3 &c : face.corner) face.low = glm::min(face.low, c), face.high = glm::max(face.high, c);
       faces_.push_back(face);
