@@ -186,9 +186,10 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // sees it.
       cuts.emplace(scene.objects[caster], light.position, std::move(strips), !view.rims.empty());
     }
-    add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
-                          segments, candidates, options.bilinear && !options.chroma_key,
-                          receiver_edge_error, masked_band ? &*cuts : nullptr);
+    add_shadow_edge_error(footprint, light.position, scene.camera.position, normal,
+                          footprint_polygon, segments, candidates,
+                          options.bilinear && !options.chroma_key, receiver_edge_error,
+                          masked_band ? &*cuts : nullptr);
   };
 
   std::vector<glm::vec4> lc;    // the receiver in hand's vertices, light clip, and their

@@ -47,9 +47,13 @@ class SurfaceCuts {
       Face face{{world[t.x], world[t.y], world[t.z]}, glm::vec3(0.0f), glm::vec3(INFINITY),
                 glm::vec3(-INFINITY)};
       face.normal = glm::cross(face.corner[1] - face.corner[0], face.corner[2] - face.corner[0]);
-      if (open && glm::dot(face.normal, light_position - face.corner[0]) < 0.0f) face.normal = -face.normal;
+      if (open && glm::dot(face.normal, light_position - face.corner[0]) < 0.0f) {
+        face.normal = -face.normal;
+      }
       if (!(glm::dot(face.normal, light_position - face.corner[0]) > 0.0f)) continue;
-      for (const glm::vec3 &c : face.corner) face.low = glm::min(face.low, c), face.high = glm::max(face.high, c);
+      for (const glm::vec3 &c : face.corner) {
+        face.low = glm::min(face.low, c), face.high = glm::max(face.high, c);
+      }
       faces_.push_back(face);
     }
   }
@@ -63,11 +67,15 @@ class SurfaceCuts {
                 std::vector<SilhouetteSegment> &segments) const {
     if (polygon.size() < 3) return;
     glm::vec3 low(INFINITY), high(-INFINITY);
-    for (const ClipVertex &v : polygon) low = glm::min(low, v.world), high = glm::max(high, v.world);
+    for (const ClipVertex &v : polygon) {
+      low = glm::min(low, v.world), high = glm::max(high, v.world);
+    }
     low -= tolerance_, high += tolerance_;
     const glm::vec3 origin = polygon[0].world;
     for (const Face &face : faces_) {
-      if (glm::any(glm::lessThan(face.high, low)) || glm::any(glm::greaterThan(face.low, high))) continue;
+      if (glm::any(glm::lessThan(face.high, low)) || glm::any(glm::greaterThan(face.low, high))) {
+        continue;
+      }
       float height[3];  // metres above the polygon's plane, towards the light
       for (int k = 0; k < 3; ++k) height[k] = glm::dot(normal, face.corner[k] - origin);
       if (!(std::max({height[0], height[1], height[2]}) > 0.0f) ||
