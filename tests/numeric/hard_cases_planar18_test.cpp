@@ -44,16 +44,22 @@ TEST(HardCases, PlanarShadowOnAFighterSeenFromInsideABallIsRight) {
 
 // The camera under the dunes (their back faces culled) looking up at a cylinder sunk in them:
 // every technique right or refused by name (the chroma key's 128-texel map is too coarse for the
-// dunes of the audit's scene; the stencil volume cannot close the open cylinder). On the closer
-// view only planar is asked: the projected techniques serve it over the budget (0.151% and
-// 0.227%, tests/hard_cases/README.md), which is theirs to answer.
+// dunes of the audit's scene; the stencil volume cannot close the open cylinder). The projected
+// techniques' refusals here are spill19's cost: the edge-error estimate counts the stray along a
+// caster's cut through the masking dunes, which does not show in these frames (0.024%, 0.023%
+// and 0.046% served before). On the closer view only planar is asked: the projected techniques
+// refuse it (spill19's test).
 TEST(HardCases, PlanarShadowOnACylinderSeenUpThroughDunesIsRight) {
   expect_right_or_refused("audit/planar18_cylinder_under_dunes_box_shadow_audit17248.json",
-                          {{"projected-chroma", "too coarse"},
+                          {{"projected", "light 1 and 'box1'"},
+                           {"projected-chroma", "too coarse"},
                            {"stencil-volume", "is not a closed mesh"}},
                           false);
   expect_right_or_refused("audit/planar18_cylinder_under_dunes_taller_dunes.json",
-                          {{"stencil-volume", "is not a closed mesh"}}, false);
+                          {{"projected", "'cylinder2'"},
+                           {"projected-chroma", "'cylinder2'"},
+                           {"stencil-volume", "is not a closed mesh"}},
+                          false);
   const char *close = "audit/planar18_cylinder_under_dunes_sphere_shadow_close.json";
   expect_these_right_or_refused(close, load(close), {"planar"}, {}, false);
 }

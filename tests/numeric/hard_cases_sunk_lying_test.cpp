@@ -19,9 +19,15 @@ TEST(HardCases, CylindersLyingThroughDunesShadowNoLitSlopeFromBehind) {
   expect_projected_right("audit/sk2_wide_open_cylinder_through_dunes.json");
 }
 
-// Before: 0.522% / 0.529% (sk5), 0.135% / 0.135% (sk7), served; sk6 right before and now.
+// Before: 0.522% / 0.529% (sk5), 0.135% / 0.135% (sk7), served; sk6 right before and now. sk5
+// was then served right (0.025%) until spill19's estimate of the stray along cylinder0's cut
+// through the masking dunes, which refuses it (30 and 33 px against 16): that estimate's cost.
 TEST(HardCases, CylindersLyingThroughOtherDunesAndLights) {
-  expect_projected_right("audit/sk5_cylinders_through_taller_dunes.json");
+  const char *taller = "audit/sk5_cylinders_through_taller_dunes.json";
+  expect_these_right_or_refused(taller, load(taller), kProjectedTechniques,
+                                {{"projected", "light 0 and 'cylinder0'"},
+                                 {"projected-chroma", "light 0 and 'cylinder0'"}},
+                                true);
   expect_projected_right("audit/sk7_cylinders_through_dunes_lower_light.json");
   expect_projected_right("audit/sk6_cylinders_moved_through_dunes.json");
 }

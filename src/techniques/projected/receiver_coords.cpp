@@ -12,8 +12,10 @@
 #include "techniques/projected/receiver_cells.h"
 #include "techniques/projected/receiver_depth_planes.h"
 #include "techniques/projected/silhouette_segment_grid.h"
+#include "techniques/texel_error/surface_cuts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -142,6 +144,10 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   std::vector<DrawnTriangle> drawn;  // step 4's triangles of the receiver triangle in hand
   std::vector<DrawnPiece> drawn_pieces;
   EdgeErrorEstimate receiver_edge_error;  // of the receiver in hand
+  // A receiver whose surface masks the texture (a depth band): the caster's cut through it is an
+  // edge of the shadow there too (surface_cuts.h), with the contact strips step 1 kept.
+  bool masked_band = false;
+  std::optional<SurfaceCuts> cuts;
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
   // corners, and their light clip coordinates), and the error along the shadow's edges there.
   auto measure_footprint = [&](std::size_t receiver, const glm::vec3 &normal,
@@ -170,9 +176,20 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       low = glm::min(low, box_low - 1.0f), high = glm::max(high, box_high + 1.0f);
     }
     segment_grid.overlapping(low, high, candidates);
-    add_shadow_edge_error(footprint, light.position, scene.camera.position, normal, footprint_polygon,
-                          segments, candidates,
-                          options.bilinear && !options.chroma_key, receiver_edge_error);
+    if (masked_band && !cuts) {
+      std::vector<std::array<glm::vec2, 4>> strips;
+      for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
+        strips.push_back({glm::vec2(strip[0].x, strip[0].y), glm::vec2(strip[1].x, strip[1].y),
+                          glm::vec2(strip[2].x, strip[2].y), glm::vec2(strip[3].x, strip[3].y)});
+      }
+      // An open caster (one with a rim) is drawn from both sides: each face cuts as the light
+      // sees it.
+      cuts.emplace(scene.objects[caster], light.position, std::move(strips), !view.rims.empty());
+    }
+    add_shadow_edge_error(footprint, light.position, scene.camera.position, normal,
+                          footprint_polygon, segments, candidates,
+                          options.bilinear && !options.chroma_key, receiver_edge_error,
+                          masked_band ? &*cuts : nullptr);
   };
 
   std::vector<glm::vec4> lc;    // the receiver in hand's vertices, light clip, and their
@@ -185,6 +202,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     // The depth band (light view space, -z against caster_back; the two bands' planes are each
     // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
     const signed char band = depth_bands ? (*depth_bands)[r] : 0;
+    masked_band = band != 0;
     // -1, -2 and -3: keep -z <= back; +1: keep -z >= back
     const float side = band < 0 ? -1.0f : static_cast<float>(band);
     band_planes = view_planes;

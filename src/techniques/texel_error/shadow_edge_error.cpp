@@ -3,6 +3,7 @@
 // polygon, measured on screen (pixels) and against the texture (texels) where it lands.
 #include "techniques/texel_error/shadow_edge_error.h"
 #include "techniques/texel_error/stray_on_screen.h"
+#include "techniques/texel_error/surface_cuts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +83,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
                            const std::vector<ClipVertex> &polygon,
                            const std::vector<SilhouetteSegment> &segments,
                            const std::vector<std::size_t> &candidates, EdgeLookup lookup,
-                           EdgeErrorEstimate &estimate) {
-  if (polygon.size() < 3 || candidates.empty()) return;
+                           EdgeErrorEstimate &estimate, const SurfaceCuts *cuts) {
+  if (polygon.size() < 3 || (candidates.empty() && !cuts)) return;
   const glm::vec3 origin = polygon[0].world;
   // Distances (world metres) from the polygon's plane, positive on the light's side.
   const float light_height = glm::dot(normal, light_position - origin);
@@ -134,8 +135,10 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
   };
   const bool clipped_by_screen = screen_sides != 0;
   const glm::vec2 half_screen = 0.5f * space.pixels;
-  for (std::size_t index : candidates) {
-    const SilhouetteSegment &segment = segments[index];
+  // One edge: a silhouette segment, or with `cut_of_mask` the caster's cut through the surface
+  // that masks the texture (surface_cuts.h), whose samples a kept contact strip covers stray
+  // nowhere.
+  auto add_edge = [&](const SilhouetteSegment &segment, bool cut_of_mask) {
     const float height_a = glm::dot(normal, segment.a - origin);
     const float height_b = glm::dot(normal, segment.b - origin);
     // Only what lies between the plane and the light throws a shadow on it (a contact edge
@@ -146,7 +149,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     float from = 0.0f, to = 1.0f;
     keep_non_negative(height_a + touching, height_b + touching, from, to);
     keep_non_negative(highest - height_a, highest - height_b, from, to);
-    if (!(from < to)) continue;
+    if (!(from < to)) return;
     const glm::vec3 caster_ends[2] = {glm::mix(segment.a, segment.b, from),
                                       glm::mix(segment.a, segment.b, to)};
     // A cut (no sides known) borders the caster's own pixels on screen, which the error
@@ -192,7 +195,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         from = near_from, to = near_to;
       }
     }
-    if (!(from < to)) continue;
+    if (!(from < to)) return;
     const glm::vec3 start = glm::mix(shadow_ends[0], shadow_ends[1], from);
     const glm::vec3 end = glm::mix(shadow_ends[0], shadow_ends[1], to);
     // Seen from behind the lit face, the caster hides the receiver beyond its foot, but for a
@@ -200,7 +203,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     bool beyond = false;
     if (contact &&
         glm::dot(segment.lit_face, camera_position - 0.5f * (start + end)) < 0.0f) {
-      if (!segment.rim) continue;
+      if (!segment.rim) return;
       beyond = true;
     }
     // A visible true edge's band excuses the pixels next to it.
@@ -223,12 +226,12 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
     const glm::vec2 across = glm::abs(screen_normal);
     const float excused_pixels = std::max(across.x, across.y) + across.x + across.y;
     const glm::vec2 along(glm::dot(end - start, t1), glm::dot(end - start, t2));
-    if (!(length > 1e-3f) || !(glm::length(along) > 0.0f)) continue;
+    if (!(length > 1e-3f) || !(glm::length(along) > 0.0f)) return;
     const glm::vec2 u = glm::normalize(along);
     // The edge in the texture, and the side of it the caster covers.
     const glm::vec2 texel_start = texel_of(space, start), texel_end = texel_of(space, end);
     const glm::vec2 texel_along = texel_end - texel_start;
-    if (!(glm::length(texel_along) > 1e-6f)) continue;
+    if (!(glm::length(texel_along) > 1e-6f)) return;
     glm::vec2 away = glm::normalize(glm::vec2(texel_along.y, -texel_along.x));
     if (sides_known && glm::dot(texel_of(space, segment.face_point) - texel_start, away) > 0.0f) {
       away = -away;
@@ -240,7 +243,7 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (banded && all_seen && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) continue;
+    if (banded && all_seen && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) return;
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
     // along a straight edge); where the screen's side cuts the strays short, every other pixel
     // too, at most 256.
@@ -257,6 +260,8 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
       // The true edge here on the screen: its band there excuses the pixels next to it.
       const bool point_seen = all_seen || on_screen(point_screen);
+      // A kept strip holds the texels on the covered side of a cut: none of them is covered.
+      if (cut_of_mask && cuts->strip_holds(on_edge - 0.75f * away)) continue;
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
         // The texture 2^size times larger: the same view, its texels that much smaller.
         const float scale = static_cast<float>(1 << size);
@@ -283,7 +288,12 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         estimate.pixels[size] += sample_length * stray;
       }
     }
-  }
+  };
+  for (std::size_t index : candidates) add_edge(segments[index], false);
+  if (!cuts) return;
+  std::vector<SilhouetteSegment> cut_segments;
+  cuts->add_cuts(polygon, normal, cut_segments);
+  for (const SilhouetteSegment &cut : cut_segments) add_edge(cut, true);
 }
 
 void complete_cuts(const SceneObject &caster, const glm::vec3 &light_position,

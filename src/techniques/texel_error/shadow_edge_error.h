@@ -57,6 +57,8 @@ struct EdgeErrorEstimate {
   }
 };
 
+class SurfaceCuts;  // surface_cuts.h
+
 // How the mask reads the texture where a shadow edge falls: the Voodoo 1's bilinear filter
 // (4-bit fractions), a bilinear filter with fine fractions (the depth map's percentage-closer
 // lookup over its 2x2 comparisons), or the nearest texel.
@@ -80,22 +82,24 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // from behind its lit face, such an edge on a rim (a wall with no back, the foot of an open
 // tube) shows the receiver beyond it, in the caster's shadow right from the foot: there the
 // texture's edge straying under the caster lights it, beyond the band of the visible edge.
+// With `cuts` (a texture masked by the receiver's surface), the caster's cut through the
+// polygon is such a contact edge too, but where a kept contact strip holds its covered side.
 void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
                            const glm::vec3 &camera_position, const glm::vec3 &normal,
                            const std::vector<ClipVertex> &polygon,
                            const std::vector<SilhouetteSegment> &segments,
                            const std::vector<std::size_t> &candidates, EdgeLookup lookup,
-                           EdgeErrorEstimate &estimate);
+                           EdgeErrorEstimate &estimate, const SurfaceCuts *cuts = nullptr);
 // The projected techniques' texture: the Voodoo 1's bilinear filter, or the nearest texel.
 inline void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,
                                   const glm::vec3 &camera_position, const glm::vec3 &normal,
                                   const std::vector<ClipVertex> &polygon,
                                   const std::vector<SilhouetteSegment> &segments,
                                   const std::vector<std::size_t> &candidates, bool bilinear,
-                                  EdgeErrorEstimate &estimate) {
+                                  EdgeErrorEstimate &estimate, const SurfaceCuts *cuts = nullptr) {
   add_shadow_edge_error(space, light_position, camera_position, normal, polygon, segments,
                         candidates, bilinear ? EdgeLookup::kVoodooBilinear : EdgeLookup::kNearest,
-                        estimate);
+                        estimate, cuts);
 }
 
 // Gives the cuts among `segments` (a zero lit_face: the caster cut by a pierced receiver's
