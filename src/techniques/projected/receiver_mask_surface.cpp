@@ -276,9 +276,26 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     // Along the receiver's outline from the light, the texture beyond it holds the caster behind
     // the receiver, which the receiver's own points next to the outline would read (the filter's
     // reach): its fins keep the caster there out of the texture, as the receiver's surface does
-    // inside it (a box hovering over a ring's mat, issue 14). Only for a triangle wholly inside
-    // the view (the fan is then its three corners, in order).
-    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) continue;
+    // inside it (a box hovering over a ring's mat, issue 14). For a triangle reaching out of the
+    // view's square, from its three corners unclipped (light screen, texels; the shim clips the
+    // fin to the screen) when all lie beyond the caster's front (light clip w, so 1/W is
+    // positive and finite) and within Outline::kNear texels (where nothing_beyond's separating
+    // axes keep their precision): a long side of a cylinder grazed by the light and leaving the
+    // view had no fin, and the mat beyond its outline shadowed its lit edge
+    // (sunk-camera-behind_18439, 0.156%).
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) & 0x10) continue;
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) {
+      fan.clear();
+      for (unsigned i : {t.x, t.y, t.z}) {
+        GrVertex screen = to_screen(clip[i], view.size, view.size);
+        screen.oow = depth_oow(view, clip[i].w);
+        fan.push_back(screen);
+      }
+      const auto far_off = [](const GrVertex &v) {
+        return !(std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear);
+      };
+      if (std::any_of(fan.begin(), fan.end(), far_off)) continue;
+    }
     const glm::vec3 *corner[3] = {&a, &b, &c};
     const unsigned index[3] = {t.x, t.y, t.z};
     for (int k = 0; k < 3; ++k) {
