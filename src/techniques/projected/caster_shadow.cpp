@@ -339,12 +339,7 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
   EdgeErrorEstimate within_budget = edge_error;
   for (float &pixels : within_budget.pixels) pixels += frame.edge_error_taken;
   if (!frame.largest_edge_error && edge_error.pixels[0] > 0.0f) {
-    // Screen pixels. Under one (fewer than 1,000 receiver pixels: a floor squeezed to a strip
-    // seen from 7 cm above it) a single wrong pixel is over the budget, and an estimate of any
-    // stray, a share of a pixel's area on average, can put a whole pixel centre on the wrong
-    // side (planar19_camera_7cm_160x120: 0.005 estimated, one pixel wrong): none is accepted.
-    const float budget = kEdgeErrorReceiverShare * receiver_screen_pixels(scene, frame.geometry);
-    frame.largest_edge_error = budget < 1.0f ? 0.0f : budget;
+    frame.largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene, frame.geometry);
   }
   EdgeErrorEstimate at_larger_sizes = edge_error;
   at_larger_sizes.add(frame.edge_error_of_all);

@@ -416,18 +416,11 @@ std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std:
                                      const EdgeErrorEstimate &frame, float largest_pixels,
                                      int size, const AcceptedSize &accepted) {
   char pixels[200];
-  if (largest_pixels > 0.0f) {
-    std::snprintf(pixels, sizeof pixels,
-                  "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
-                  "pixels; %.0f of them taken by the frame's other shadows)",
-                  static_cast<double>(frame.pixels[0]), static_cast<double>(largest_pixels),
-                  static_cast<double>(taken));
-  } else {  // a budget under one pixel, where no stray is accepted (caster_shadow.cpp)
-    std::snprintf(pixels, sizeof pixels,
-                  "%.3f screen pixels (none is accepted: 0.1%% of the receivers' pixels is "
-                  "under one pixel, which a single wrong pixel would exceed)",
-                  static_cast<double>(frame.pixels[0]));
-  }
+  std::snprintf(pixels, sizeof pixels,
+                "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
+                "pixels; %.0f of them taken by the frame's other shadows)",
+                static_cast<double>(frame.pixels[0]), static_cast<double>(largest_pixels),
+                static_cast<double>(taken));
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
