@@ -16,20 +16,11 @@ using namespace hard_cases;  // the checks of hard_case_checks.h
 
 namespace {
 
-// Planar within the budget, not refusing, on `file`. hard_case_checks.h's
-// expect_these_right_or_refused wants over 150 shadowed pixels; these frames hold 25 to 179 (the
-// floor is a strip), so each pixel weighs 0.05% to 0.25% of the receiver pixels, and 0.1% is one
-// or two of them.
+// Planar within the budget, not refusing, on `file`. These frames hold 25 to 179 shadowed
+// pixels (the floor is a strip), so each pixel weighs 0.05% to 0.25% of the receiver pixels,
+// and 0.1% is one or two of them.
 void expect_planar_right(const std::string &file) {
-  const gs::Scene scene = load(file);
-  const Truth truth = truth_of(scene);
-  ASSERT_GT(truth.shadow_pixels, 20) << file << ": no shadow, the case tests nothing";
-  const Outcome o = run("planar", scene, truth);
-  report(file + " planar", o);
-  expect_clean_glide("planar", o);
-  for (const std::string &e : o.refusals) ADD_FAILURE() << file << ": " << e;
-  EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-      << file;
+  expect_these_right_or_refused(file, load(file), {"planar"}, {}, true, Leeway{20, ""});
 }
 
 // The audit's scene and its variants: camera 5 to 12 cm above the floor, 160x120 and 320x240,

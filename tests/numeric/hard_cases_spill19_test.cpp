@@ -18,21 +18,8 @@ namespace {
 // Each projected technique serves `file` within the budget, or refuses it naming light 0 and
 // `caster`.
 void expect_projected_right_or_refused_naming(const std::string &file, const std::string &caster) {
-  const gs::Scene scene = load(file);
-  const Truth truth = truth_of(scene);
-  ASSERT_GT(truth.shadow_pixels, 200) << file << ": no shadow, the case tests nothing";
-  for (const std::string &name : kProjectedTechniques) {
-    const Outcome o = run(name, scene, truth);
-    report(file + " " + name, o);
-    expect_clean_glide(name, o);
-    if (!o.refusals.empty()) {
-      EXPECT_NE(o.refusals[0].find("light 0 and '" + caster + "'"), std::string::npos)
-          << o.refusals[0];
-      continue;
-    }
-    EXPECT_LE(o.errors.false_shadow_interior + o.errors.false_light_interior, kInteriorBudget)
-        << file << " " << name;
-  }
+  expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, true,
+                                Leeway{150, "light 0 and '" + caster + "'"});
 }
 
 }  // namespace
