@@ -1,9 +1,11 @@
 // demo_bench: what the projected shadows cost in the fighter demo at 640x480 with 256x256
 // textures. Same run, same frames: the frame without shadows, with them through the LFB path and
-// through the direct (render-to-texture) path; the five step times; frames per second without
-// PNG writing; peak memory. Medians of repeats after a warm-up (llvmpipe compiles each new state
-// on its first draw). `--only none|lfb|direct --frames N` draws N frames of one mode untimed, for
-// callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces the shim's fast paths off.
+// through the direct (render-to-texture) path; where the main thread's frame goes (on a core, in
+// the run queue, asleep waiting for the rasterisers) and step 2's read-back wait; the five step
+// times; frames per second without PNG writing; peak memory. Medians of repeats after a warm-up
+// (llvmpipe compiles each new state on its first draw). `--only none|lfb|direct --frames N`
+// draws N frames of one mode untimed, for callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces
+// the shim's fast paths off.
 #include "scene/fight_scene.h"
 #include "techniques/projected/projected_shadow.h"
 
@@ -106,7 +108,8 @@ int main(int argc, char **argv) {
     if (std::strcmp(argv[i], "--help") == 0) {
       std::printf("usage: demo_bench [--frames N] [--only none|lfb|direct] [--fidelity]\nTimes N frames of the "
                   "fighter demo at 640x480, 256x256 shadows: without shadows, LFB path, direct\n"
-                  "path (median ms per frame), the five steps, frames per second and peak memory.\n"
+                  "path (median ms per frame), where the main thread's frame goes, the five steps,\n"
+                  "frames per second and peak memory.\n"
                   "--only draws N frames of one mode untimed (for callgrind, LP_NUM_THREADS=0).\n"
                   "--fidelity prints each GLIDESHIM_PLAIN_GL knob's error on one shadowed frame.\n"
                   "GLIDESHIM_EXACT=1 forces the shim's fast paths off.\n");
