@@ -1,9 +1,11 @@
 // demo_bench: what the projected shadows cost in the fighter demo at 640x480 with 256x256
 // textures. Same run, same frames: the frame without shadows, with them through the LFB path and
-// through the direct (render-to-texture) path; the five step times; frames per second without
-// PNG writing; peak memory. Medians of repeats after a warm-up (llvmpipe compiles each new state
-// on its first draw). `--only none|lfb|direct --frames N` draws N frames of one mode untimed, for
-// callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces the shim's fast paths off.
+// through the direct (render-to-texture) path; where the main thread's frame goes (on a core, in
+// the run queue, asleep waiting for the rasterisers) and step 2's read-back wait; the five step
+// times; frames per second without PNG writing; peak memory. Medians of repeats after a warm-up
+// (llvmpipe compiles each new state on its first draw). `--only none|lfb|direct --frames N`
+// draws N frames of one mode untimed, for callgrind (LP_NUM_THREADS=0). GLIDESHIM_EXACT=1 forces
+// the shim's fast paths off.
 #include "scene/fight_scene.h"
 #include "techniques/projected/projected_shadow.h"
 
@@ -11,6 +13,7 @@
 #include <glide_shim.h>
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,6 +27,32 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Where the main thread's wall time goes (milliseconds, from /proc/thread-self/schedstat): on a
+// core (the program's own work, the shim's and Mesa's set-up; llvmpipe rasterises on threads of
+// its own) and waiting in the run queue for a core (a busy machine). The rest of the wall time it
+// was asleep: waiting for the rasterisers (a read-back, grSstIdle). `process` is the CPU time of
+// every thread of the process.
+struct ThreadTimes {
+  double on_cpu = 0.0, run_queue = 0.0, process = 0.0;
+  static ThreadTimes now() {
+    ThreadTimes t;
+    if (std::FILE *file = std::fopen("/proc/thread-self/schedstat", "r")) {
+      unsigned long long cpu_ns = 0, queue_ns = 0;
+      if (std::fscanf(file, "%llu %llu", &cpu_ns, &queue_ns) == 2) {
+        t.on_cpu = static_cast<double>(cpu_ns) * 1e-6, t.run_queue = static_cast<double>(queue_ns) * 1e-6;
+      }
+      std::fclose(file);
+    }
+    timespec process{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &process);
+    t.process = static_cast<double>(process.tv_sec) * 1e3 + static_cast<double>(process.tv_nsec) * 1e-6;
+    return t;
+  }
+  ThreadTimes operator-(const ThreadTimes &o) const {
+    return {on_cpu - o.on_cpu, run_queue - o.run_queue, process - o.process};
+  }
+};
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -79,7 +108,8 @@ int main(int argc, char **argv) {
     if (std::strcmp(argv[i], "--help") == 0) {
       std::printf("usage: demo_bench [--frames N] [--only none|lfb|direct] [--fidelity]\nTimes N frames of the "
                   "fighter demo at 640x480, 256x256 shadows: without shadows, LFB path, direct\n"
-                  "path (median ms per frame), the five steps, frames per second and peak memory.\n"
+                  "path (median ms per frame), where the main thread's frame goes, the five steps,\n"
+                  "frames per second and peak memory.\n"
                   "--only draws N frames of one mode untimed (for callgrind, LP_NUM_THREADS=0).\n"
                   "--fidelity prints each GLIDESHIM_PLAIN_GL knob's error on one shadowed frame.\n"
                   "GLIDESHIM_EXACT=1 forces the shim's fast paths off.\n");
@@ -128,6 +158,11 @@ int main(int argc, char **argv) {
   }
   const char *names[3] = {"no shadows", "shadows, LFB path", "shadows, direct path"};
   std::vector<double> frame_ms[3];
+  std::vector<ThreadTimes> thread_ms[3];  // per frame (ThreadTimes)
+  // Per frame of the two shadowed modes: step 2's time in the unsynchronised frame, the
+  // read-backs' wait for step 1's drawing and their copies (nothing on the direct path, whose
+  // step 1 reads its words back itself).
+  std::vector<double> read_back_ms[3];
   std::vector<gs::StepTimes> steps;
   // Warm-up: every mode once, so llvmpipe's shader compiles are out of the measurement.
   for (int mode = 0; mode < 3; ++mode) {
@@ -141,10 +176,13 @@ int main(int argc, char **argv) {
     const gs::Scene &scene = fight.at(static_cast<float>(i) / 30.0f);
     for (int mode = 0; mode < 3; ++mode) {
       const auto start = Clock::now();
+      const ThreadTimes times_start = ThreadTimes::now();
       if (mode == kNone) gs::render_scene(scene, gs::project_scene(scene));
-      else gs::render_projected_shadows(scene, mode == kLfb ? lfb : direct, false);
+      else read_back_ms[mode].push_back(
+               gs::render_projected_shadows(scene, mode == kLfb ? lfb : direct, false).times.ms[1]);
       grSstIdle();
       frame_ms[mode].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      thread_ms[mode].push_back(ThreadTimes::now() - times_start);
       grBufferSwap(0);
     }
   }
@@ -163,6 +201,20 @@ int main(int argc, char **argv) {
     const double ms = median(frame_ms[mode]);
     std::printf("  %-22s %7.2f ms  %6.1f frames/s  ratio to no shadows %.2f\n", names[mode], ms,
                 1000.0 / ms, ms / none);
+  }
+  std::printf("  main thread, median ms a frame: on a core, in the run queue, asleep (waiting for\n"
+              "  the rasterisers); CPU of all threads\n");
+  for (int mode = 0; mode < 3; ++mode) {
+    std::vector<double> cpu, queue, asleep, process;
+    for (std::size_t i = 0; i < thread_ms[mode].size(); ++i) {
+      const ThreadTimes &t = thread_ms[mode][i];
+      cpu.push_back(t.on_cpu), queue.push_back(t.run_queue), process.push_back(t.process);
+      asleep.push_back(frame_ms[mode][i] - t.on_cpu - t.run_queue);
+    }
+    std::printf("  %-22s %7.2f %7.2f %7.2f   all threads %7.2f", names[mode], median(cpu),
+                median(queue), median(asleep), median(process));
+    if (mode == kLfb) std::printf("   step 2 (read-backs) %5.2f", median(read_back_ms[mode]));
+    std::printf("\n");
   }
   std::printf("  LFB path / direct path %7.2f       (target within 1.10)\n",
               median(frame_ms[kLfb]) / median(frame_ms[kDirect]));

@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -150,6 +152,7 @@ CasterDraw cover_caster_from_light(const Scene &scene, std::size_t caster, Light
                 std::to_string(scene.height) + " back buffer; step 1 rendered it into texture "
                 "memory directly";
   }
+  view.cut_faces = std::make_shared<std::optional<SurfaceCuts::Faces>>();  // for step 3
   CasterDraw draw;
   const glm::mat4 to_view = view.view * object.model_to_world;
   const glm::vec3 light_world = view.position;

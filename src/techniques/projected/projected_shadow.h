@@ -10,6 +10,7 @@
 #include "techniques/light_passes/scene_pass.h"
 #include "techniques/projected/shadow_texture_memory.h"
 #include "techniques/texel_error/shadow_edge_error.h"
+#include "techniques/texel_error/surface_cuts.h"
 #include "techniques/texel_error/texel_footprint.h"
 
 #include <glide.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -122,6 +124,11 @@ struct LightView {
   // A SurfaceMask's strips beside the caster's cut by the receiver (contact_strips.h; the
   // light's screen, texels): step 1 keeps the caster out of them.
   std::vector<std::array<GrVertex, 4>> contact_strips;
+  // The caster's faces that a masking receiver's surface cuts (surface_cuts.h; world), made by
+  // the first texture of this view whose step 3 needs them and shared by the view's copies, the
+  // plain and masked textures of one cover (cover_caster_from_light makes the holder; without
+  // one, step 3 makes its own).
+  std::shared_ptr<std::optional<SurfaceCuts::Faces>> cut_faces;
 };
 
 struct ShadowTexture {

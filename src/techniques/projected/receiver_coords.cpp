@@ -147,6 +147,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
   // A receiver whose surface masks the texture (a depth band): the caster's cut through it is an
   // edge of the shadow there too (surface_cuts.h), with the contact strips step 1 kept.
   bool masked_band = false;
+  std::optional<SurfaceCuts::Faces> own_cut_faces;  // without the view's (LightView::cut_faces)
   std::optional<SurfaceCuts> cuts;
   // The texels' footprint on the part of a receiver polygon that can be shadowed (world
   // corners, and their light clip coordinates), and the error along the shadow's edges there.
@@ -177,14 +178,11 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     }
     segment_grid.overlapping(low, high, candidates);
     if (masked_band && !cuts) {
-      std::vector<std::array<glm::vec2, 4>> strips;
-      for (const std::array<GrVertex, 4> &strip : view.contact_strips) {
-        strips.push_back({glm::vec2(strip[0].x, strip[0].y), glm::vec2(strip[1].x, strip[1].y),
-                          glm::vec2(strip[2].x, strip[2].y), glm::vec2(strip[3].x, strip[3].y)});
-      }
       // An open caster (one with a rim) is drawn from both sides: each face cuts as the light
       // sees it.
-      cuts.emplace(scene.objects[caster], light.position, std::move(strips), !view.rims.empty());
+      std::optional<SurfaceCuts::Faces> &faces = view.cut_faces ? *view.cut_faces : own_cut_faces;
+      if (!faces) faces.emplace(scene.objects[caster], light.position, !view.rims.empty());
+      cuts.emplace(*faces, view.contact_strips);
     }
     add_shadow_edge_error(footprint, light.position, scene.camera.position, normal,
                           footprint_polygon, segments, candidates,
