@@ -340,7 +340,8 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
   for (const ShadowJob &job : frame.caster_jobs) {
     for (const ShadowTriangle &t : job.receivers.triangles) {
       if (t.reaches_caster) {
-        lost += centres_lost_to_snap(job.view, t, frame.options.projective, scene.width, scene.height);
+        lost += centres_lost_to_snap(job.view, t, frame.options.projective, scene.width,
+                                     scene.height);
       }
     }
   }
@@ -357,7 +358,8 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
   ScreenCheck check;
   check.edge_error_pixels = edge_error.pixels[0] + static_cast<float>(lost);
   const bool too_coarse = coarsest.pixels_per_texel > frame.largest_footprint;
-  if (!too_coarse && lost > 0 && within_budget.pixels[0] + static_cast<float>(lost) > *frame.largest_edge_error) {
+  if (!too_coarse && lost > 0 &&
+      within_budget.pixels[0] + static_cast<float>(lost) > *frame.largest_edge_error) {
     check.reason = snapped_receivers_reason(scene, light, caster, lost, frame.edge_error_taken,
                                             *frame.largest_edge_error);
     return check;  // no size draws those centres
