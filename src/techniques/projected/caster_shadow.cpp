@@ -338,12 +338,8 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
   // Pixel centres thin receiver triangles lose to the snap, each perhaps wrong (receiver_cells.h).
   int lost = 0;
   for (const ShadowJob &job : frame.caster_jobs) {
-    for (const ShadowTriangle &t : job.receivers.triangles) {
-      if (t.reaches_caster) {
-        lost += centres_lost_to_snap(job.view, t, frame.options.projective, scene.width,
-                                     scene.height);
-      }
-    }
+    lost += centres_lost_to_snap(job.view, job.receivers.triangles, frame.options.projective,
+                                 scene.width, scene.height);
   }
   // The frame's budget is shared: casters take it in the scene's order, and one that would
   // overdraw it is refused.
@@ -352,9 +348,11 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
   if (!frame.largest_edge_error && (edge_error.pixels[0] > 0.0f || lost > 0)) {
     frame.largest_edge_error = edge_error_budget(scene, frame.geometry);
   }
-  EdgeErrorEstimate at_larger_sizes = edge_error;
+  EdgeErrorEstimate with_lost = edge_error;  // the lost centres count at every size
+  for (float &pixels : with_lost.pixels) pixels += static_cast<float>(lost);
+  EdgeErrorEstimate at_larger_sizes = with_lost;
   at_larger_sizes.add(frame.edge_error_of_all);
-  frame.edge_error_of_all.add(edge_error);
+  frame.edge_error_of_all.add(with_lost);
   ScreenCheck check;
   check.edge_error_pixels = edge_error.pixels[0] + static_cast<float>(lost);
   const bool too_coarse = coarsest.pixels_per_texel > frame.largest_footprint;
