@@ -8,7 +8,12 @@
 // pixels). The estimate beside the feet walked each foot triangle only straight across the foot,
 // which leaves a long thin triangle within a texel; where it leaves the triangle, it now walks
 // it along its longest edge too, and the depth map refuses the plate's shadow by name. Every
-// other technique is right, or refuses by name.
+// other technique is right, or refuses by name. The frames hold 840 receiver pixels, so 0.1% is
+// under one whole pixel: the projected techniques' budget for the estimate is 0 there
+// (edge_error_budget, tiny20), and they refuse the cylinder's shadow by name (estimates 0.06
+// to 0.12 px). Right before at 0.000%, but a wrong pixel centre is all or nothing, and no
+// threshold on the estimate told these frames from planar19's at 10 cm (0.01 px, one pixel,
+// 0.208%): the refusal is the price of a budget that means whole pixels.
 #include "hard_case_checks.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +25,9 @@ namespace {
 // What each scene's refusals must name: the light and the caster, and why.
 const std::map<std::string, std::string> kRefusals = {
     {"depth-map", "light 0 and 'plate': the shadow texels would move its edges beyond their band"},
+    {"projected", "light 0 and 'cylinder': the shadow texels would move its edges beyond their band"},
+    {"projected-chroma",
+     "light 0 and 'cylinder': the shadow texels would move its edges beyond their band"},
     {"stencil-volume", "'plate' is not a closed mesh"}};
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "techniques/projected/contact_strips.h"
 #include "techniques/projected/hidden_layers.h"
 #include "techniques/projected/pierced_receivers.h"
+#include "techniques/projected/receiver_cells.h"
 #include "techniques/projected/receiver_layers.h"
 
 #include <glide_shim.h>
@@ -334,19 +335,33 @@ ScreenCheck check_against_screen(ProjectedFrame &frame, std::size_t light, std::
       edge_error_receiver_pixels = job.receivers.edge_error_receiver_pixels;
     }
   }
+  // Pixel centres thin receiver triangles lose to the snap, each perhaps wrong (receiver_cells.h).
+  int lost = 0;
+  for (const ShadowJob &job : frame.caster_jobs) {
+    lost += centres_lost_to_snap(job.view, job.receivers.triangles, frame.options.projective,
+                                 scene.width, scene.height);
+  }
   // The frame's budget is shared: casters take it in the scene's order, and one that would
   // overdraw it is refused.
   EdgeErrorEstimate within_budget = edge_error;
   for (float &pixels : within_budget.pixels) pixels += frame.edge_error_taken;
-  if (!frame.largest_edge_error && edge_error.pixels[0] > 0.0f) {
-    frame.largest_edge_error = kEdgeErrorReceiverShare * receiver_screen_pixels(scene, frame.geometry);
+  if (!frame.largest_edge_error && (edge_error.pixels[0] > 0.0f || lost > 0)) {
+    frame.largest_edge_error = edge_error_budget(scene, frame.geometry);
   }
-  EdgeErrorEstimate at_larger_sizes = edge_error;
+  EdgeErrorEstimate with_lost = edge_error;  // the lost centres count at every size
+  for (float &pixels : with_lost.pixels) pixels += static_cast<float>(lost);
+  EdgeErrorEstimate at_larger_sizes = with_lost;
   at_larger_sizes.add(frame.edge_error_of_all);
-  frame.edge_error_of_all.add(edge_error);
+  frame.edge_error_of_all.add(with_lost);
   ScreenCheck check;
-  check.edge_error_pixels = edge_error.pixels[0];
+  check.edge_error_pixels = edge_error.pixels[0] + static_cast<float>(lost);
   const bool too_coarse = coarsest.pixels_per_texel > frame.largest_footprint;
+  if (!too_coarse && lost > 0 &&
+      within_budget.pixels[0] + static_cast<float>(lost) > *frame.largest_edge_error) {
+    check.reason = snapped_receivers_reason(scene, light, caster, lost, frame.edge_error_taken,
+                                            *frame.largest_edge_error);
+    return check;  // no size draws those centres
+  }
   if (too_coarse ||
       (frame.largest_edge_error && within_budget.pixels[0] > *frame.largest_edge_error)) {
     constexpr int kLargestSize = 512;  // four 256x256 textures

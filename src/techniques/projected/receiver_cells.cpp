@@ -1,6 +1,9 @@
-// Which receiver polygons can take the caster's shadow or its edge (receiver_cells.h). Spaces:
-// light clip in; light screen texels and the texture's cells between; world planes out.
+// Which receiver polygons can take the caster's shadow or its edge (receiver_cells.h), and the
+// pixel centres the snap takes from thin ones. Spaces: light clip in; light screen texels and
+// the texture's cells between; world planes out; Glide screen (pixels) for the snap.
 #include "techniques/projected/receiver_cells.h"
+
+#include "techniques/geometry/projection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +53,96 @@ bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, st
   glm::vec2 low, high;
   texel_box(view, light_clip, count, low, high);
   return view.covered_near(low, high, kReachTexels);
+}
+
+namespace {
+
+float cross(const glm::vec2 &a, const glm::vec2 &b, const glm::vec2 &p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+// A receiver triangle's screen corners as they are and as the Voodoo snaps them (pixels).
+struct ScreenCorners {
+  glm::vec2 exact[3], snapped[3];
+  float area = 0.0f, snapped_area = 0.0f;  // twice the signed areas
+  explicit ScreenCorners(const GrVertex *v) {
+    for (int k = 0; k < 3; ++k) {
+      exact[k] = {v[k].x, v[k].y};
+      snapped[k] = {snap_to_subpixel(v[k].x), snap_to_subpixel(v[k].y)};
+    }
+    area = cross(exact[0], exact[1], exact[2]);
+    snapped_area = cross(snapped[0], snapped[1], snapped[2]);
+  }
+  // Its least height under 1/16 px (area / longest side, compared squared).
+  bool thin() const {
+    float longest = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec2 side = exact[(k + 1) % 3] - exact[k];
+      longest = std::max(longest, glm::dot(side, side));
+    }
+    constexpr float kSnap = 1.0f / 16.0f;  // pixels
+    return area * area < kSnap * kSnap * longest;
+  }
+  // The snapped triangle holds `centre` strictly inside, wound as the exact one.
+  bool snapped_holds(const glm::vec2 &centre) const {
+    if (snapped_area == 0.0f || (snapped_area > 0.0f) != (area > 0.0f)) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (!(cross(snapped[(k + 1) % 3], snapped[(k + 2) % 3], centre) * snapped_area > 0.0f)) {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+int centres_lost_to_snap(const LightView &view, const std::vector<ShadowTriangle> &triangles,
+                         bool projective, int width, int height) {
+  std::vector<glm::vec2> lost;  // the centres, Glide screen pixels
+  std::vector<const ShadowTriangle *> thick;
+  for (const ShadowTriangle &triangle : triangles) {
+    if (!triangle.reaches_caster) continue;
+    const ScreenCorners corners(triangle.v);
+    if (!corners.thin()) {
+      thick.push_back(&triangle);
+      continue;
+    }
+    const glm::vec2 low = glm::min(corners.exact[0], glm::min(corners.exact[1], corners.exact[2]));
+    const glm::vec2 high = glm::max(corners.exact[0], glm::max(corners.exact[1], corners.exact[2]));
+    const int x0 = std::max(static_cast<int>(std::ceil(low.x - 0.5f)), 0);
+    const int x1 = std::min(static_cast<int>(std::floor(high.x - 0.5f)), width - 1);
+    const int y0 = std::max(static_cast<int>(std::ceil(low.y - 0.5f)), 0);
+    const int y1 = std::min(static_cast<int>(std::floor(high.y - 0.5f)), height - 1);
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        float w[3];  // screen barycentric weights in the exact triangle
+        for (int k = 0; k < 3; ++k) {
+          w[k] = cross(corners.exact[(k + 1) % 3], corners.exact[(k + 2) % 3], centre) / corners.area;
+        }
+        if (w[0] < 0.0f || w[1] < 0.0f || w[2] < 0.0f || corners.snapped_holds(centre)) continue;
+        // Its (s, t) there (Glide texture units, 256 across), as step 5 would divide them.
+        const GrVertex *v = triangle.v;
+        float s = 0.0f, t = 0.0f, q = 0.0f;
+        for (int k = 0; k < 3; ++k) {
+          s += w[k] * v[k].tmuvtx[0].sow, t += w[k] * v[k].tmuvtx[0].tow;
+          q += w[k] * (projective ? v[k].tmuvtx[0].oow : v[k].oow);
+        }
+        const glm::vec2 texel = glm::vec2(s, t) / q * (static_cast<float>(view.size) / 256.0f);
+        if (view.covered_near(texel, texel, kReachTexels)) lost.push_back(centre);
+      }
+    }
+  }
+  // A centre that a triangle as thick as the snap draws takes that triangle's own (s, t),
+  // moved by no more than 1/32 px spans there: not lost.
+  int count = 0;
+  for (const glm::vec2 &centre : lost) {
+    count += std::none_of(thick.begin(), thick.end(), [&](const ShadowTriangle *t) {
+      return ScreenCorners(t->v).snapped_holds(centre);
+    });
+  }
+  return count;
 }
 
 bool edge_rectangle(const LightView &view, const SilhouetteRows &rows, const glm::vec4 *light_clip,

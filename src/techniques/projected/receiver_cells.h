@@ -28,6 +28,17 @@ bool sees_caster(const LightView &view, const glm::vec4 *light_clip, std::size_t
 // box its projection spans, widened by bilinear filtering's reach and the shim's snapping.
 bool reaches_covered_cell(const LightView &view, const glm::vec4 *light_clip, std::size_t count);
 
+// The pixel centres (Glide screen) that a flagged receiver triangle of `triangles` (step 3's,
+// step-4 screen corners unsnapped) thinner than the Voodoo's 1/16-pixel snap (its least height
+// under 1/16 px) holds where its texture coordinates reach a cell the caster covers, but that
+// neither its snapped self nor a flagged triangle as thick as the snap draws. The snap hands
+// such a centre to a thin neighbour, or one step 3 did not flag, whose (s, t) there extend
+// its own far beyond where it lies (a floor seen 7 cm above it, planar19_camera_7cm_160x120:
+// box0's whole shadow, 5 pixels, left lit), so whether the frame shadows it is unknown.
+// `projective`: the divisor is tmuvtx[0].oow (else oow); centres on the width x height screen.
+int centres_lost_to_snap(const LightView &view, const std::vector<ShadowTriangle> &triangles,
+                         bool projective, int width, int height);
+
 // LightView::silhouette by rows, as bits (cell x of a row at bit x % 64 of its word x / 64), so
 // that a box's silhouette cells are bounded in a step or two per row: the first silhouette
 // column at or after x and the last at or before it (kFineCells and -1 when there is none).

@@ -415,17 +415,34 @@ std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std:
                                      std::size_t receiver, float taken,
                                      const EdgeErrorEstimate &frame, float largest_pixels,
                                      int size, const AcceptedSize &accepted) {
-  char pixels[200];
+  // An estimate under one pixel to a hundredth: a budget of 0 (edge_error_budget) refuses any.
+  char pixels[240];
   std::snprintf(pixels, sizeof pixels,
-                "%.0f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
-                "pixels; %.0f of them taken by the frame's other shadows)",
-                static_cast<double>(frame.pixels[0]), static_cast<double>(largest_pixels),
+                "%.*f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
+                "pixels; %.*f of them taken by the frame's other shadows)",
+                frame.pixels[0] < 1.0f ? 2 : 0, static_cast<double>(frame.pixels[0]),
+                static_cast<double>(largest_pixels), taken < 1.0f && taken > 0.0f ? 2 : 0,
                 static_cast<double>(taken));
   return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
          "': the shadow texels would move its edges beyond their band over about " + pixels +
          ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
          "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
          ")";
+}
+
+std::string snapped_receivers_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                     int lost, float taken, float largest_pixels) {
+  char budget[160];
+  std::snprintf(budget, sizeof budget,
+                "the largest accepted is %.0f, 0.1%% of the receivers' pixels; %.*f of them "
+                "taken by the frame's other shadows",
+                static_cast<double>(largest_pixels), taken < 1.0f && taken > 0.0f ? 2 : 0,
+                static_cast<double>(taken));
+  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name + "': " +
+         std::to_string(lost) +
+         " pixel centres near its shadow lie on receiver triangles thinner than the Voodoo's "
+         "1/16-pixel snap, which draws them with a neighbour's shadow texture coordinates, "
+         "not the surface's there (" + budget + ")";
 }
 
 }  // namespace gs

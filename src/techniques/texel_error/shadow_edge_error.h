@@ -39,12 +39,21 @@ struct SilhouetteSegment {
 inline constexpr float kEdgeErrorReceiverShare = 0.001f;
 
 // The budget's base: the screen pixels (Glide screen) whose centre some object's camera-facing
-// triangle covers (the parts before the camera), each once. It is the error measure's base
-// (src/measure/speed_error.cpp: every visible surface's pixels, caster or receiver) but for the
-// pixels an object shadows on itself alone, which the measure leaves out. Summing the receivers'
-// areas instead counted the floor behind a wall twice and made the budget up to a fifth larger
-// than the measure's 0.1% (grazing_12217: 14,205 against 12,826 pixels, issue 14).
+// triangle covers (the parts before the camera), each once, both as it is and as the Voodoo
+// draws it (its corners snapped to 1/16 px). It is the error measure's base
+// (src/measure/speed_error.cpp: every visible surface's pixels, caster or receiver, that the
+// frame draws too) but for the pixels an object shadows on itself alone, which the measure
+// leaves out and a technique cannot know without the truth's own rays (31 of the crumpled
+// sheet's 301 pixels in planar19_camera_7cm_160x120). Summing the receivers' areas instead
+// counted the floor behind a wall twice and made the budget up to a fifth larger than the
+// measure's 0.1% (grazing_12217: 14,205 against 12,826 pixels, issue 14).
 float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame);
+
+// The frame's budget for the estimate (screen pixels): 0.1% of receiver_screen_pixels, in
+// whole pixels, as a pixel centre is wrong or not. Under 1,000 pixels it is 0: any stray the
+// estimate sees could put a whole pixel, over 0.1%, on the wrong side of an edge (a floor seen
+// 10 cm above it, planar19_camera_10cm_160x120: an estimate of 0.034 px and one pixel wrong).
+float edge_error_budget(const Scene &scene, const FrameGeometry &frame);
 
 // Estimated interior error (wrong pixels beyond an edge's band), for the texture as it is and at
 // 2, 4 and 8 times its side (the texels halve with each doubling), so that a refusal can name
@@ -148,5 +157,12 @@ std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std:
                                      std::size_t receiver, float taken,
                                      const EdgeErrorEstimate &frame, float largest_pixels,
                                      int size, const AcceptedSize &accepted);
+
+// The refusal's reason (without kCastsNoShadow) for a shadow whose receiver triangles thinner
+// than the Voodoo's 1/16-pixel snap lose `lost` pixel centres near the caster's texels to
+// their neighbours (receiver_cells.h, centres_lost_to_snap): each may be wrong, over the
+// frame's `largest_pixels` (edge_error_budget) with the `taken` of its other shadows.
+std::string snapped_receivers_reason(const Scene &scene, std::size_t light, std::size_t caster,
+                                     int lost, float taken, float largest_pixels);
 
 }  // namespace gs
