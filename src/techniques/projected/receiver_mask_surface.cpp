@@ -282,8 +282,40 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     // positive and finite) and within Outline::kNear texels (where nothing_beyond's separating
     // axes keep their precision): a long side of a cylinder grazed by the light and leaving the
     // view had no fin, and the mat beyond its outline shadowed its lit edge
-    // (sunk-camera-behind_18439, 0.156%).
-    if ((outside[t.x] | outside[t.y] | outside[t.z]) & 0x10) continue;
+    // (sunk-camera-behind_18439, 0.156%). A triangle reaching nearer the light than the
+    // caster's front has its outline edges clipped there (light clip w >= nearest_w), with the
+    // drawn polygon's centre as the inward side: a panel's thin end face, 1.8 m to 8.4 m from
+    // the light (light clip w) with the caster's front at 5.5 m, had no fin, and the caster
+    // behind its outline shadowed it (near-extra-lights_20615, 0.131%).
+    const auto far_off = [](const GrVertex &v) {
+      return !(std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear);
+    };
+    const glm::vec3 *corner[3] = {&a, &b, &c};
+    const unsigned index[3] = {t.x, t.y, t.z};
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) & 0x10) {
+      GrVertex inside = fan[0];  // the light's screen, texels: inside the triangle's drawn part
+      inside.x = inside.y = 0.0f;
+      for (const GrVertex &v : fan) inside.x += v.x, inside.y += v.y;
+      inside.x /= static_cast<float>(fan.size()), inside.y /= static_cast<float>(fan.size());
+      for (int k = 0; k < 3; ++k) {
+        if (!outline.contains(index[k], index[(k + 1) % 3])) continue;
+        glm::vec4 ends[2] = {clip[index[k]], clip[index[(k + 1) % 3]]};  // light clip
+        if (ends[0].w < nearest_w && ends[1].w < nearest_w) continue;
+        for (int e = 0; e < 2; ++e) {
+          glm::vec4 &end = ends[e];
+          const glm::vec4 &other = ends[1 - e];
+          if (end.w < nearest_w) end += (other - end) * ((nearest_w - end.w) / (other.w - end.w));
+        }
+        GrVertex fin_ends[2];
+        for (int e = 0; e < 2; ++e) {
+          fin_ends[e] = to_screen(ends[e], view.size, view.size);
+          fin_ends[e].oow = depth_oow(view, ends[e].w);
+        }
+        if (far_off(fin_ends[0]) || far_off(fin_ends[1])) continue;
+        draw_fin(fin_ends[0], fin_ends[1], inside, outline, *corner[k], *corner[(k + 1) % 3], farthest);
+      }
+      continue;
+    }
     if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) {
       fan.clear();
       for (unsigned i : {t.x, t.y, t.z}) {
@@ -291,13 +323,8 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
         screen.oow = depth_oow(view, clip[i].w);
         fan.push_back(screen);
       }
-      const auto far_off = [](const GrVertex &v) {
-        return !(std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear);
-      };
       if (std::any_of(fan.begin(), fan.end(), far_off)) continue;
     }
-    const glm::vec3 *corner[3] = {&a, &b, &c};
-    const unsigned index[3] = {t.x, t.y, t.z};
     for (int k = 0; k < 3; ++k) {
       if (outline.contains(index[k], index[(k + 1) % 3])) {
         draw_fin(fan[static_cast<std::size_t>(k)], fan[static_cast<std::size_t>((k + 1) % 3)],
