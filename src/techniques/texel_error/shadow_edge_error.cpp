@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -243,7 +242,16 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       most_pixels_per_texel =
           std::max(most_pixels_per_texel, edge_pixels_per_texel(space, end_point, t1, t2, u));
     }
-    if (banded && all_seen && most_pixels_per_texel * kMostStrayTexels <= excused_pixels) return;
+    // Whether the caster's lit face along the edge hides the true edge at `point` (below).
+    auto face_hides = [&](const glm::vec3 &point) {
+      return banded && sides_known &&
+             segment_crosses_triangle(camera_position, point, segment.a, segment.b,
+                                      segment.face_point);
+    };
+    if (banded && all_seen && most_pixels_per_texel * kMostStrayTexels <= excused_pixels &&
+        !face_hides(start) && !face_hides(end) && !face_hides(0.5f * (start + end))) {
+      return;
+    }
     // Samples every half texel or so along the edge, at most 64 (texels repeat their pattern
     // along a straight edge); where the screen's side cuts the strays short, every other pixel
     // too, at most 256.
@@ -258,8 +266,13 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
       const glm::vec2 on_edge = texel_of(space, point);
       const glm::vec2 point_screen = footprint_screen_pixels(space, point);
       const float pixels_per_texel = edge_pixels_per_texel(space, point, t1, t2, u);
+      // The caster's lit face along the edge hides the true edge here from the camera (a light
+      // on the camera's side throws the shadow's edge behind the caster, issue 14: near_17122):
+      // no band is seen to excuse the pixels next to it, and what the texture's edge strays out
+      // from under the caster counts where the camera sees it past that face.
+      const bool hidden = face_hides(point);
       // The true edge here on the screen: its band there excuses the pixels next to it.
-      const bool point_seen = all_seen || on_screen(point_screen);
+      const bool point_seen = (all_seen || on_screen(point_screen)) && !hidden;
       // A kept strip holds the texels on the covered side of a cut: none of them is covered.
       if (cut_of_mask && cuts->strip_holds(on_edge - 0.75f * away)) continue;
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
@@ -273,18 +286,24 @@ void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_p
         // either side of the edge), or the Jacobian's estimate where it has no screen position.
         glm::vec2 strayed_screen;
         float stray_pixels = 0.0f;
-        if (plane.screen_of(space, on_edge + offset / scale * away, strayed_screen)) {
+        glm::vec3 strayed_world;
+        if (plane.screen_of(space, on_edge + offset / scale * away, strayed_screen, strayed_world)) {
           const glm::vec2 shown = on_screen_part(half_screen, point_screen, strayed_screen);
           const float strayed_across = std::abs(glm::dot(screen_normal, strayed_screen - point_screen));
           stray_pixels = std::min(strayed_across, 1e6f) * std::max(shown.y - shown.x, 0.0f);
+          if (hidden && segment_crosses_triangle(camera_position, strayed_world, segment.a,
+                                                 segment.b, segment.face_point)) {
+            stray_pixels = 0.0f;  // the stray ends behind the face too: none of it is seen
+          }
         } else if (point_seen) {
           stray_pixels = std::abs(offset) * per_texel;
         }
         // Beyond the excused pixels of a visible edge (beyond a rim, what goes under the
         // caster); beside a hidden one, what leaves the caster. Off the screen, no band.
         const float seen = !beyond || offset < 0.0f ? stray_pixels : 0.0f;
-        const float stray = banded ? std::max(seen - (point_seen ? excused_pixels : 0.0f), 0.0f)
-                                   : (offset > 0.0f ? stray_pixels : 0.0f);
+        const float stray = banded && !hidden
+                                ? std::max(seen - (point_seen ? excused_pixels : 0.0f), 0.0f)
+                                : (offset > 0.0f ? stray_pixels : 0.0f);
         estimate.pixels[size] += sample_length * stray;
       }
     }
@@ -372,77 +391,6 @@ void mark_rims(const std::vector<std::pair<glm::vec3, glm::vec3>> &rims,
       return on_rim(rim, segment.a) && on_rim(rim, segment.b);
     });
   }
-}
-
-AcceptedSize smallest_accepted_size(int size, int largest_size, float footprint,
-                                    float largest_footprint, const EdgeErrorEstimate &within_budget,
-                                    const std::optional<float> &largest_edge_pixels) {
-  AcceptedSize accepted;
-  for (int doubling = 0, tried = size; tried <= largest_size; ++doubling, tried *= 2) {
-    accepted.largest_tried = tried;
-    const bool footprint_fits =
-        footprint * static_cast<float>(size) / static_cast<float>(tried) <= largest_footprint;
-    // Past the sizes estimated, the largest one's error halves with each doubling: a shadow
-    // edge strays by a share of a texel's width.
-    const int estimated = std::min(doubling, EdgeErrorEstimate::kSizes - 1);
-    const bool edges_fit =
-        !largest_edge_pixels ||
-        std::ldexp(within_budget.pixels[estimated], estimated - doubling) <= *largest_edge_pixels;
-    if (footprint_fits && edges_fit) {
-      accepted.size = tried;
-      break;
-    }
-  }
-  return accepted;
-}
-
-std::string accepted_size_words(const AcceptedSize &accepted) {
-  return accepted.size ? "size " + std::to_string(accepted.size) + " would be accepted"
-                       : "no size up to " + std::to_string(accepted.largest_tried) +
-                             " would be accepted";
-}
-
-std::string shadow_edge_error_message(const Scene &scene, std::size_t light, std::size_t caster,
-                                      std::size_t receiver, float taken,
-                                      const EdgeErrorEstimate &frame, float largest_pixels,
-                                      int size, const AcceptedSize &accepted) {
-  return shadow_edge_error_reason(scene, light, caster, receiver, taken, frame, largest_pixels,
-                                  size, accepted) +
-         "; " + kCastsNoShadow;
-}
-
-std::string shadow_edge_error_reason(const Scene &scene, std::size_t light, std::size_t caster,
-                                     std::size_t receiver, float taken,
-                                     const EdgeErrorEstimate &frame, float largest_pixels,
-                                     int size, const AcceptedSize &accepted) {
-  // An estimate under one pixel to a hundredth: a budget of 0 (edge_error_budget) refuses any.
-  char pixels[240];
-  std::snprintf(pixels, sizeof pixels,
-                "%.*f screen pixels (the largest accepted is %.0f, 0.1%% of the receivers' "
-                "pixels; %.*f of them taken by the frame's other shadows)",
-                frame.pixels[0] < 1.0f ? 2 : 0, static_cast<double>(frame.pixels[0]),
-                static_cast<double>(largest_pixels), taken < 1.0f && taken > 0.0f ? 2 : 0,
-                static_cast<double>(taken));
-  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name +
-         "': the shadow texels would move its edges beyond their band over about " + pixels +
-         ", most on '" + scene.objects[receiver].name + "', so the " + std::to_string(size) +
-         "-texel shadow is too coarse for the screen (" + accepted_size_words(accepted) +
-         ")";
-}
-
-std::string snapped_receivers_reason(const Scene &scene, std::size_t light, std::size_t caster,
-                                     int lost, float taken, float largest_pixels) {
-  char budget[160];
-  std::snprintf(budget, sizeof budget,
-                "the largest accepted is %.0f, 0.1%% of the receivers' pixels; %.*f of them "
-                "taken by the frame's other shadows",
-                static_cast<double>(largest_pixels), taken < 1.0f && taken > 0.0f ? 2 : 0,
-                static_cast<double>(taken));
-  return "light " + std::to_string(light) + " and '" + scene.objects[caster].name + "': " +
-         std::to_string(lost) +
-         " pixel centres near its shadow lie on receiver triangles thinner than the Voodoo's "
-         "1/16-pixel snap, which draws them with a neighbour's shadow texture coordinates, "
-         "not the surface's there (" + budget + ")";
 }
 
 }  // namespace gs

@@ -91,6 +91,9 @@ enum class EdgeLookup { kVoodooBilinear, kBilinear, kNearest };
 // from behind its lit face, such an edge on a rim (a wall with no back, the foot of an open
 // tube) shows the receiver beyond it, in the caster's shadow right from the foot: there the
 // texture's edge straying under the caster lights it, beyond the band of the visible edge.
+// A true edge that the caster's lit face along it hides from the camera (a light on the
+// camera's side throws the edge behind the caster) has no band seen either: there what the
+// texture's edge strays out from under the caster counts unless it ends behind that face too.
 // With `cuts` (a texture masked by the receiver's surface), the caster's cut through the
 // polygon is such a contact edge too, but where a kept contact strip holds its covered side.
 void add_shadow_edge_error(const FootprintSpace &space, const glm::vec3 &light_position,

@@ -51,17 +51,42 @@ struct PlaneFromTexture {
   // False where the texel's ray from the light misses the plane before it, or the point is
   // behind the camera: no screen position.
   bool screen_of(const FootprintSpace &space, const glm::vec2 &texel, glm::vec2 &screen) const {
+    glm::vec3 world;
+    return screen_of(space, texel, screen, world);
+  }
+  // The same, with the point on the plane (world) too.
+  bool screen_of(const FootprintSpace &space, const glm::vec2 &texel, glm::vec2 &screen,
+                 glm::vec3 &world) const {
     if (!usable) return false;
     const glm::vec2 ndc(texel.x / space.texels * 2.0f - 1.0f, 1.0f - texel.y / space.texels * 2.0f);
     const glm::vec3 abw = plane_from_ndc * glm::vec3(ndc, 1.0f);
     if (!(abw.z > 0.0f)) return false;  // the light's w there, inverted: the plane behind it
-    const glm::vec3 world = origin + (abw.x / abw.z) * t1 + (abw.y / abw.z) * t2;
+    world = origin + (abw.x / abw.z) * t1 + (abw.y / abw.z) * t2;
     const glm::vec4 c = space.camera_clip * glm::vec4(world, 1.0f);
     if (!(c.w > 0.0f)) return false;
     screen = footprint_screen_pixels(space, world);
     return true;
   }
 };
+
+// Whether the segment from `from` to `to` (world) passes through the triangle a, b, c (world)
+// short of `to` (Moller and Trumbore): the camera's view of a shadow edge's point blocked by the
+// caster's face along the edge (shadow_edge_error.cpp).
+inline bool segment_crosses_triangle(const glm::vec3 &from, const glm::vec3 &to,
+                                     const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
+  const glm::vec3 direction = to - from, ab = b - a, ac = c - a;
+  const glm::vec3 p = glm::cross(direction, ac);
+  const float det = glm::dot(ab, p);
+  if (std::abs(det) < 1e-12f) return false;
+  const glm::vec3 s = from - a;
+  const float u = glm::dot(s, p) / det;
+  if (u < 0.0f || u > 1.0f) return false;
+  const glm::vec3 q = glm::cross(s, ab);
+  const float v = glm::dot(direction, q) / det;
+  if (v < 0.0f || u + v > 1.0f) return false;
+  const float t = glm::dot(ac, q) / det;
+  return t > 0.0f && t < 0.999f;
+}
 
 // The screen's sides as camera clip planes, kept where dot(side, clip) >= 0: x and y within w.
 inline const glm::vec4 kScreenSides[4] = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}};
