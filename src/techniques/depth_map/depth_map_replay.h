@@ -192,8 +192,9 @@ struct RayBody {
   bool casts = false;
 };
 
-// Whether the segment o .. o + d (its far end left out: the point it reaches) meets the body.
-inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
+// Whether the segment o .. o + d (its far end left out: the point it reaches) meets the body;
+// with `facing_only`, only its triangles facing o (TriangleBvh::any).
+inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d, bool facing_only = false) {
   double from = 0.0, to = 1.0;  // the segment clipped to the box (slabs)
   for (int k = 0; k < 3; ++k) {
     if (std::abs(d[k]) < 1e-300) {
@@ -205,14 +206,17 @@ inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
     from = std::max(from, near), to = std::min(to, far);
     if (from > to) return false;
   }
-  return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5);
+  return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5, facing_only);
 }
 
 // Whether no body of `bodies` hides `point` (world) from the camera at `camera` (world), whose
 // `camera_clip` maps world to its clip space: the segment from the point to where it crosses the
 // near plane (clip z + w = 0, linear along it; negative at the camera) is tested, as a face
 // nearer than that plane is clipped away and hides nothing (a camera whose near plane cuts into
-// a hut's wall sees inside it). False for a point nearer than the near plane.
+// a hut's wall sees inside it). Only faces turned towards the camera hide it: the scene pass
+// culls the others, so an open mesh seen from behind hides nothing (near-extra-lights_18628: the
+// receiver beyond a sheet's back faces taken as hidden, its false light beside the sheet's cut
+// through it never counted). False for a point nearer than the near plane.
 inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::dmat4 &camera_clip,
                                  const dvec3 &camera, const dvec3 &point) {
   const double near_point = [&] {
@@ -224,7 +228,7 @@ inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::
   const double t_near = near_point / (near_point - (eye.z + eye.w));  // 0 point .. 1 camera
   const dvec3 start = point + (camera - point) * t_near;
   for (const RayBody &body : bodies) {
-    if (blocks(body, start, point - start)) return false;
+    if (blocks(body, start, point - start, true)) return false;
   }
   return true;
 }
