@@ -213,12 +213,12 @@ inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d, bool fac
 // `camera_clip` maps world to its clip space: the segment from the point to where it crosses the
 // near plane (clip z + w = 0, linear along it; negative at the camera) is tested, as a face
 // nearer than that plane is clipped away and hides nothing (a camera whose near plane cuts into
-// a hut's wall sees inside it). Only faces turned towards the camera hide it: the scene pass
-// culls the others, so an open mesh seen from behind hides nothing (near-extra-lights_18628: the
-// receiver beyond a sheet's back faces taken as hidden, its false light beside the sheet's cut
-// through it never counted). False for a point nearer than the near plane.
+// a hut's wall sees inside it). With `culled`, only faces turned towards the camera hide it, as
+// the scene pass culls the others (an open mesh seen from behind hides nothing: the frame and
+// the truth show what lies beyond it); without, every face does, which the estimates that were
+// measured that way keep. False for a point nearer than the near plane.
 inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::dmat4 &camera_clip,
-                                 const dvec3 &camera, const dvec3 &point) {
+                                 const dvec3 &camera, const dvec3 &point, bool culled = false) {
   const double near_point = [&] {
     const glm::dvec4 p = camera_clip * glm::dvec4(point, 1.0);
     return p.z + p.w;
@@ -228,7 +228,7 @@ inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::
   const double t_near = near_point / (near_point - (eye.z + eye.w));  // 0 point .. 1 camera
   const dvec3 start = point + (camera - point) * t_near;
   for (const RayBody &body : bodies) {
-    if (blocks(body, start, point - start, true)) return false;
+    if (blocks(body, start, point - start, culled)) return false;
   }
   return true;
 }

@@ -136,7 +136,7 @@ inline std::vector<ContactError> strip_errors(const Scene &scene, const std::vec
           strips::StripPixel pixel;
           pixel.x = x, pixel.y = y;
           pixel.point = from + (to - from) * hit;
-          if (!seen_past_near_plane(bodies, camera_clip, camera, pixel.point)) continue;
+          if (!seen_past_near_plane(bodies, camera_clip, camera, pixel.point, true)) continue;
           for (int m = 0; m < 3; ++m) pixel.corner[m] = receiver.position[t[m]];
           pixel.lit_side = lit_side;
           at[index] = static_cast<int>(pixels.size());
