@@ -42,15 +42,15 @@ struct StripPixel {
 }  // namespace strips
 
 // Per scene object (zero for one that casts nothing), with the receiver that has the most: the
-// pixels of every receiver whose
-// triangles facing the camera make a strip under kThinStripPx thick on screen (their screen area
-// over their extent along the strip) that the lookup of the `side << k`-texel map of `frustum`
+// pixels of every receiver whose triangles facing the camera make a strip under kThinStripPx
+// thick on screen (their screen area over their extent along the strip) that the lookup of the `side << k`-texel map of `frustum`
 // (light `light`, the technique's `options`; k = 0 .. 3) gets wrong against a ray to the light,
 // where that caster alone decides, and that lie more than a pixel (Chebyshev) from every pixel
 // of the strip whose 4-neighbour on it the truth calls otherwise: the measure's interior error.
-inline std::vector<ContactError> strip_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
-                                            const LightFrustum &frustum, const SpotLight &light,
-                                            int side, const TechniqueOptions &options) {
+inline std::vector<ContactError> strip_errors(const Scene &scene,
+                                              const std::vector<WorldMesh> &meshes,
+                                              const LightFrustum &frustum, const SpotLight &light,
+                                              int side, const TechniqueOptions &options) {
   std::vector<ContactError> result(scene.objects.size());
   const FootprintSpace space = camera_screen(scene);
   const glm::dmat4 camera_clip(space.camera_clip), clip_to_world = glm::inverse(camera_clip);
