@@ -33,7 +33,10 @@ struct ContactError {
 // light) is compared with the lookup of a map that holds the caster and the receiver (when it
 // casts) as step 1 draws them: its facet push, slope term and bounded copy, the receiver's
 // lowered depth, the 2x2 percentage-closer lookup or the nearest texel. What is wrong beyond the
-// excused pixels of the foot's edge on screen counts.
+// excused pixels of the foot's edge on screen counts. The frame's mask is every light's shadow
+// at once: a point another light's shadow holds is wrong for none, and false light beside a foot
+// whose other side the frame has in shadow (another light's, another caster's) is next to no
+// edge, so nothing of it is excused.
 std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                          const LightFrustum &frustum, const SpotLight &light,
                                          int side, const TechniqueOptions &options);

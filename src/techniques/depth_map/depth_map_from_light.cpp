@@ -8,6 +8,7 @@
 #include "techniques/depth_map/depth_map_facets.h"
 #include "techniques/depth_map/depth_map_footprint.h"
 #include "techniques/depth_map/depth_map_self_shadow.h"
+#include "techniques/depth_map/depth_map_strips.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/light_passes/scene_pass.h"
 #include "techniques/texel_error/shadow_edge_error.h"
@@ -185,6 +186,13 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
         std::isinf(options_.depth_map_largest_footprint_px)
             ? std::vector<ContactError>(scene_.objects.size())
             : contact_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
+    // So does the error on receivers seen as thin strips, where an edge nearly along the strip
+    // crosses its pixel centres far from where the estimate along the edge puts it
+    // (depth_map_strips.h).
+    const std::vector<ContactError> strips =
+        std::isinf(options_.depth_map_largest_footprint_px)
+            ? std::vector<ContactError>(scene_.objects.size())
+            : strip_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
     // So does the false shadow a caster that receives casts on its own lit side where the light
     // grazes it (depth_map_self_shadow.h): near no edge, a texel's ray strikes it nearer. Each
     // larger size replayed in the frustum fitted at that size (its pad for the lookup's reach
@@ -205,6 +213,11 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
         footprint.edge_error_receiver = contact.receiver;
       }
       footprint.edge_error.add(contact.pixels);
+      const ContactError &strip = strips[footprint.caster];
+      if (strip.pixels.pixels[0] > footprint.edge_error.pixels[0]) {
+        footprint.edge_error_receiver = strip.receiver;
+      }
+      footprint.edge_error.add(strip.pixels);
       const EdgeErrorEstimate &own = grazed[footprint.caster];
       if (own.pixels[0] > footprint.edge_error.pixels[0]) {
         footprint.edge_error_receiver = footprint.caster;

@@ -192,8 +192,9 @@ struct RayBody {
   bool casts = false;
 };
 
-// Whether the segment o .. o + d (its far end left out: the point it reaches) meets the body.
-inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
+// Whether the segment o .. o + d (its far end left out: the point it reaches) meets the body;
+// with `facing_only`, only its triangles facing o (TriangleBvh::any).
+inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d, bool facing_only = false) {
   double from = 0.0, to = 1.0;  // the segment clipped to the box (slabs)
   for (int k = 0; k < 3; ++k) {
     if (std::abs(d[k]) < 1e-300) {
@@ -205,16 +206,19 @@ inline bool blocks(const RayBody &body, const dvec3 &o, const dvec3 &d) {
     from = std::max(from, near), to = std::min(to, far);
     if (from > to) return false;
   }
-  return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5);
+  return body.triangles.any(o, d, 1e-9, 1.0 - 1e-5, facing_only);
 }
 
 // Whether no body of `bodies` hides `point` (world) from the camera at `camera` (world), whose
 // `camera_clip` maps world to its clip space: the segment from the point to where it crosses the
 // near plane (clip z + w = 0, linear along it; negative at the camera) is tested, as a face
 // nearer than that plane is clipped away and hides nothing (a camera whose near plane cuts into
-// a hut's wall sees inside it). False for a point nearer than the near plane.
+// a hut's wall sees inside it). With `culled`, only faces turned towards the camera hide it, as
+// the scene pass culls the others (an open mesh seen from behind hides nothing: the frame and
+// the truth show what lies beyond it); without, every face does, which the estimates that were
+// measured that way keep. False for a point nearer than the near plane.
 inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::dmat4 &camera_clip,
-                                 const dvec3 &camera, const dvec3 &point) {
+                                 const dvec3 &camera, const dvec3 &point, bool culled = false) {
   const double near_point = [&] {
     const glm::dvec4 p = camera_clip * glm::dvec4(point, 1.0);
     return p.z + p.w;
@@ -224,7 +228,7 @@ inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::
   const double t_near = near_point / (near_point - (eye.z + eye.w));  // 0 point .. 1 camera
   const dvec3 start = point + (camera - point) * t_near;
   for (const RayBody &body : bodies) {
-    if (blocks(body, start, point - start)) return false;
+    if (blocks(body, start, point - start, culled)) return false;
   }
   return true;
 }

@@ -152,7 +152,8 @@ bool TriangleBvh::nearest(const glm::dvec3 &o, const glm::dvec3 &d, double low, 
   return found;
 }
 
-bool TriangleBvh::any(const glm::dvec3 &o, const glm::dvec3 &d, double low, double high) const {
+bool TriangleBvh::any(const glm::dvec3 &o, const glm::dvec3 &d, double low, double high,
+                      bool facing_only) const {
   if (nodes_.empty()) return false;
   const glm::dvec3 inverse = 1.0 / d;
   double entry = 0.0;
@@ -168,6 +169,11 @@ bool TriangleBvh::any(const glm::dvec3 &o, const glm::dvec3 &d, double low, doub
       continue;
     }
     for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+      if (facing_only) {
+        const std::size_t c = 3 * static_cast<std::size_t>(order_[k]);
+        const glm::dvec3 face = glm::cross(corners_[c + 1] - corners_[c], corners_[c + 2] - corners_[c]);
+        if (!(glm::dot(face, d) < 0.0)) continue;
+      }
       double t = 0.0;
       if (meets(order_[k], o, d, t) && t > low && t < high) return true;
     }

@@ -35,8 +35,11 @@ class TriangleBvh {
   // `hit` its triangle. False (both untouched) when there is none.
   bool nearest(const glm::dvec3 &o, const glm::dvec3 &d, double low, double &high,
                std::size_t &hit) const;
-  // Whether any triangle is met with a parameter in (low, high).
-  bool any(const glm::dvec3 &o, const glm::dvec3 &d, double low, double high) const;
+  // Whether any triangle is met with a parameter in (low, high); with `facing_only`, only one
+  // whose winding faces back along d (cross(b - a, c - a) . d < 0): what a camera at the ray's
+  // origin sees, as the scene pass culls back faces and the truth's camera rays drop them.
+  bool any(const glm::dvec3 &o, const glm::dvec3 &d, double low, double high,
+           bool facing_only = false) const;
 
  private:
   // A node's box (world, padded by pad_); a leaf holds order_[first .. first + count), an inner
