@@ -70,10 +70,14 @@ struct PlaneFromTexture {
 };
 
 // Whether the segment from `from` to `to` (world) passes through the triangle a, b, c (world)
-// short of `to` (Moller and Trumbore): the camera's view of a shadow edge's point blocked by the
-// caster's face along the edge (shadow_edge_error.cpp).
+// short of `to` (Moller and Trumbore), and not along its side a, b: the camera's view of a
+// shadow edge's point blocked by the caster's face along the edge a, b (shadow_edge_error.cpp).
+// A camera at the light sees every shadow edge along its silhouette edge, which hides nothing
+// (Nguyen's Figure 8 from the light): a crossing within a thousandth of the face's extent of that
+// side (its barycentric weight of c) is not counted, nor one that rounding puts there.
 inline bool segment_crosses_triangle(const glm::vec3 &from, const glm::vec3 &to,
                                      const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
+  constexpr float kOffSide = 1e-3f;
   const glm::vec3 direction = to - from, ab = b - a, ac = c - a;
   const glm::vec3 p = glm::cross(direction, ac);
   const float det = glm::dot(ab, p);
@@ -83,7 +87,7 @@ inline bool segment_crosses_triangle(const glm::vec3 &from, const glm::vec3 &to,
   if (u < 0.0f || u > 1.0f) return false;
   const glm::vec3 q = glm::cross(s, ab);
   const float v = glm::dot(direction, q) / det;
-  if (v < 0.0f || u + v > 1.0f) return false;
+  if (v <= kOffSide || u + v > 1.0f) return false;
   const float t = glm::dot(ac, q) / det;
   return t > 0.0f && t < 0.999f;
 }
