@@ -104,6 +104,7 @@ int centres_lost_to_snap(const LightView &view, const std::vector<ShadowTriangle
   for (const ShadowTriangle &triangle : triangles) {
     if (!triangle.reaches_caster) continue;
     const ScreenCorners corners(triangle.v);
+    if (corners.area == 0.0f) continue;  // seen edge-on: it holds no centre to lose
     if (!corners.thin()) {
       thick.push_back(&triangle);
       continue;
