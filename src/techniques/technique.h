@@ -48,7 +48,7 @@ struct TechniqueOptions {
   ProjectedShadowOptions projected;  // projected texture; its `size` is every map's side
   // Depth map: glPolygonOffset factor and units, the slope term's bound and the receiver's own
   // slope, chosen together with the acne sweep (bench/hard_case_sweeps acne,
-  // docs/hard_cases_results.md). A receiver's own plane, read across the lookup's texels, is
+  // docs/hard_cases_sweeps.md). A receiver's own plane, read across the lookup's texels, is
   // taken off its depth (receiver 0.5: the 2x2 lookup's half-texel reach along each axis;
   // depth_map_lookup.h), so the caster's push needs to cover only what its neighbours read: the
   // floor at the foot of a steep lit wall (the corridor a2 at 512 texels: 0.28% acne at a bound
@@ -74,7 +74,7 @@ struct TechniqueOptions {
   // back from the light by how much faster its neighbour falls away within the lookup's reach
   // (depth_map_facets.h): glPolygonOffset's slope term covers a facet's own slope only, and a
   // curved receiver under a low light shadowed itself (acne, up to 0.23% of the pixels). On by
-  // default (the acne sweep, docs/hard_cases_results.md); off only to measure that.
+  // default (the acne sweep, docs/hard_cases_sweeps.md); off only to measure that.
   bool depth_map_facet_bias = true;
   enum class VolumeMode { Automatic, ZPass, ZFail } volume_mode = VolumeMode::Automatic;
 };

@@ -3,7 +3,7 @@
 // the light: its light-facing triangles are none of its shadow (every ray leaves it through a face
 // turned away), so planar cast nothing (85% of the pixels wrong) and the projected techniques too
 // (8.4%), both reported as success. A caster buried whole in a receiver with a layer behind it.
-// Planar on y3 and y4 of the varied scenes (docs/hard_cases_results.md): covers next to the near
+// Planar on y3 and y4 of the varied scenes (docs/hard_cases_log.md): covers next to the near
 // plane and over receivers the shim clips to the screen. The depth map's bounded slope term
 // where faces seen edge-on near a wide light were pushed past the floor (k1 and y6 moved).
 #include "hard_case_checks.h"

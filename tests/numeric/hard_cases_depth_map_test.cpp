@@ -77,7 +77,7 @@ const std::vector<int> kMapSizes = {64, 128, 256, 512};
 
 // Wide cones (140 to 160 degrees) with casters whose shadows run out towards the rim: every size
 // right or refused, with either lookup, and the sizes refused those measured with
-// `hard_case_sweeps depth-footprint` (docs/hard_cases_results.md): the hall needs 1024 texels
+// `hard_case_sweeps depth-footprint` (docs/hard_cases_sweeps.md): the hall needs 1024 texels
 // (7.2 px at 512), a pillar's shadow 5.4 px at 512 (measured within 0.1%: refused all the same).
 TEST(HardCases, DepthMapWideConeTexelsRightOrRefused) {
   const std::map<std::string, std::set<int>> expected = {

@@ -58,7 +58,7 @@ const std::vector<int> kSizes = {32, 64, 128, 256};
 
 }  // namespace
 
-// Where coarse maps were measured wrong (docs/results.md, "Shadow texels against screen
+// Where coarse maps were measured wrong (docs/hard_cases_results.md, "Shadow texels against screen
 // pixels"), they must be refused; the finer sizes must be accepted.
 TEST(HardCases, CoarseTexelsTowardsTheCameraAreRefused) {
   const Refused crate =
@@ -98,7 +98,7 @@ TEST(HardCases, CoarseTexelsNearTheCamera) {
 
 // The fight at the bench's 640x480: 64 texels were measured 0.10 to 0.37% interior error
 // (refused), 128 within 0.05% (accepted by the bilinear technique; the chroma-key variant's
-// lower limit refuses it, docs/results.md), 256 by both.
+// lower limit refuses it, docs/hard_cases_results.md), 256 by both.
 TEST(HardCases, FightRefusesCoarseMapsOnly) {
   gs::FightScene fight(640, 480, 256);
   const Refused refused = expect_fine_or_refused("fight t=2.1", fight.at(2.1f), {64, 128, 256});

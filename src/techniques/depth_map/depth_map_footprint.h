@@ -13,7 +13,7 @@
 namespace gs::depth_map {
 
 // The largest footprint accepted by default, measured with `hard_case_sweeps depth-footprint`
-// (interior error against the footprint, docs/hard_cases_results.md, "The depth map's texels
+// (interior error against the footprint, docs/hard_cases_sweeps.md, "The depth map's texels
 // against screen pixels"): every configuration over 0.1% had 5.56 px or more, every one at
 // 4.59 px or less was within, with the percentage-closer lookup (GL_LINEAR) and nearest alike.
 inline constexpr float kLargestDepthMapFootprintPx = 5.0f;

@@ -19,7 +19,7 @@ namespace {
 // edges there (an edge lies along L (N.E) - E (N.L) for a caster edge E, normal N and light
 // direction L: along L as N.L goes to 0), and a texel moves an edge only across itself. The
 // largest singular value called the fight's frames at 128 texels 47 to 93 px with 0.01 to
-// 0.05% interior error (docs/results.md).
+// 0.05% interior error (docs/hard_cases_results.md).
 float stretch_at(const FootprintSpace &space, const glm::vec3 &p, const glm::vec3 &t1,
                  const glm::vec3 &t2) {
   // Texels and pixels per metre along the plane's tangents.

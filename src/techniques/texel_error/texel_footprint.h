@@ -2,7 +2,7 @@
 // the direction the texel is stretched in, where the caster's shadow edge can fall on it (near
 // the caster's silhouette in the texture), and a whole shadow's footprint: the largest over all
 // but a sliver of the screen. The projected technique refuses a shadow whose texels are too
-// coarse (its edge would stray more than a pixel from the true one): docs/results.md ("Shadow
+// coarse (its edge would stray more than a pixel from the true one): docs/hard_cases_results.md ("Shadow
 // texels against screen pixels") has the threshold and its measurement.
 #pragma once
 
@@ -17,7 +17,7 @@
 namespace gs {
 
 // Footprints above this many pixels are refused by default, measured with `hard_case_sweeps
-// footprint` (interior error against the footprint, docs/results.md): bilinear filtering puts
+// footprint` (interior error against the footprint, docs/hard_cases_results.md): bilinear filtering puts
 // an edge within about half a texel of the caster's, point sampling (the chroma-key variant,
 // --point) within a texel, so it gets a smaller limit.
 inline constexpr float kLargestTexelFootprintPx = 5.0f;
