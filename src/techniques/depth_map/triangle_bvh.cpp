@@ -2,6 +2,8 @@
 // Space: world (boxes, rays; double); ray parameters in units of the ray's direction.
 #include "techniques/depth_map/triangle_bvh.h"
 
+#include "techniques/geometry/line_triangle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -10,18 +12,7 @@ namespace gs::depth_map {
 
 bool ray_meets_triangle(const glm::dvec3 &o, const glm::dvec3 &d, const glm::dvec3 &a,
                         const glm::dvec3 &b, const glm::dvec3 &c, double &t) {
-  const glm::dvec3 e1 = b - a, e2 = c - a;
-  const glm::dvec3 p = glm::cross(d, e2);
-  const double det = glm::dot(e1, p);
-  if (std::abs(det) < 1e-300) return false;
-  const glm::dvec3 s = o - a;
-  const double u = glm::dot(s, p) / det;
-  if (u < 0.0 || u > 1.0) return false;
-  const glm::dvec3 q = glm::cross(s, e1);
-  const double v = glm::dot(d, q) / det;
-  if (v < 0.0 || u + v > 1.0) return false;
-  t = glm::dot(e2, q) / det;
-  return true;
+  return line_meets_triangle(o, d, a, b - a, c - a, t, 1e-300);
 }
 
 namespace {

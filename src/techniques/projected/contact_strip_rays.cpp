@@ -5,6 +5,7 @@
 
 #include "techniques/projected/contact_strips.h"
 #include "techniques/projected/projected_shadow.h"
+#include "techniques/geometry/line_triangle.h"
 #include "techniques/geometry/point_in_mesh.h"
 #include "techniques/geometry/projection.h"
 #include "techniques/light_passes/scene_pass.h"
@@ -14,23 +15,6 @@
 
 namespace gs {
 namespace {
-
-// Moller-Trumbore, edges included: where the line origin + t * direction meets the triangle
-// a, a + e1, a + e2 (world); false when it is parallel to it or misses it.
-bool meets(const glm::vec3 &origin, const glm::vec3 &direction, const glm::vec3 &a,
-           const glm::vec3 &e1, const glm::vec3 &e2, float &t) {
-  const glm::vec3 q = glm::cross(direction, e2);
-  const float det = glm::dot(e1, q);
-  if (det == 0.0f) return false;
-  const glm::vec3 s = origin - a;
-  const float u = glm::dot(s, q) / det;
-  if (u < 0.0f || u > 1.0f) return false;
-  const glm::vec3 r = glm::cross(s, e1);
-  const float v = glm::dot(direction, r) / det;
-  if (v < 0.0f || u + v > 1.0f) return false;
-  t = glm::dot(e2, r) / det;
-  return true;
-}
 
 // Whether the camera's near-plane rectangle (clip z = -w inside the view; `camera_clip` world to
 // camera clip) meets the inside of the closed surface `world`, `triangles` (world): the camera
@@ -61,7 +45,7 @@ bool near_plane_meets_inside(const std::vector<glm::vec3> &world,
   auto segment_meets = [](const glm::vec3 &p, const glm::vec3 &q, const glm::vec3 &a,
                           const glm::vec3 &b, const glm::vec3 &c) {
     float t = 0.0f;
-    return meets(p, q - p, a, b - a, c - a, t) && t >= 0.0f && t <= 1.0f;
+    return line_meets_triangle(p, q - p, a, b - a, c - a, t) && t >= 0.0f && t <= 1.0f;
   };
   for (const glm::uvec3 &t : triangles) {
     const glm::vec3 &a = world[t.x], &b = world[t.y], &c = world[t.z];
@@ -182,7 +166,7 @@ bool ContactStripRays::hidden_from_camera(const glm::vec3 &point) const {
     float t = 0.0f;
     return f.camera_facing && !(ndc.x < f.camera_low.x - slack || ndc.x > f.camera_high.x + slack ||
                                 ndc.y < f.camera_low.y - slack || ndc.y > f.camera_high.y + slack) &&
-           meets(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < t_near;
+           line_meets_triangle(point, camera_ - point, f.a, f.e1, f.e2, t) && t > 1e-4f && t < t_near;
   });
 }
 
@@ -204,7 +188,7 @@ ContactStripRays::Seen ContactStripRays::seen_in_shadow(const glm::vec2 &p) cons
         p.y > f->high.y + slack) {
       continue;
     }
-    if (!meets(view_.position, direction, f->a, f->e1, f->e2, t) || !(t > 0.0f)) continue;
+    if (!line_meets_triangle(view_.position, direction, f->a, f->e1, f->e2, t) || !(t > 0.0f)) continue;
     if (f->caster && (f->light_facing || !closed_)) first_front = std::min(first_front, t);
     // Step 1's mask leaves out the receiver nearer the light than the caster's front.
     if (f->caster || w_at_light + w_per_t * t >= view_.caster_front) hits_.push_back({t, f});

@@ -3,6 +3,7 @@
 // (shadow_edge_error.cpp).
 #pragma once
 
+#include "techniques/geometry/line_triangle.h"
 #include "techniques/texel_error/texel_footprint.h"
 
 #include <glm/glm.hpp>
@@ -78,18 +79,9 @@ struct PlaneFromTexture {
 inline bool segment_crosses_triangle(const glm::vec3 &from, const glm::vec3 &to,
                                      const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c) {
   constexpr float kOffSide = 1e-3f;
-  const glm::vec3 direction = to - from, ab = b - a, ac = c - a;
-  const glm::vec3 p = glm::cross(direction, ac);
-  const float det = glm::dot(ab, p);
-  if (std::abs(det) < 1e-12f) return false;
-  const glm::vec3 s = from - a;
-  const float u = glm::dot(s, p) / det;
-  if (u < 0.0f || u > 1.0f) return false;
-  const glm::vec3 q = glm::cross(s, ab);
-  const float v = glm::dot(direction, q) / det;
-  if (v <= kOffSide || u + v > 1.0f) return false;
-  const float t = glm::dot(ac, q) / det;
-  return t > 0.0f && t < 0.999f;
+  float t = 0.0f;
+  return line_meets_triangle(from, to - from, a, b - a, c - a, t, 1e-12f, kOffSide) && t > 0.0f &&
+         t < 0.999f;
 }
 
 // The screen's sides as camera clip planes, kept where dot(side, clip) >= 0: x and y within w.
