@@ -61,12 +61,19 @@ void rows_between(float low, float high, int height, int &first, int &past) {
   past = std::min(static_cast<int>(std::floor(high - 0.5f)) + 1, height);
 }
 
+// std::ceil(pixels) as an int, for a value well inside int's range (a crossing of a polygon
+// clipped to the screen): truncation leaves a positive fraction's value one short.
+int ceil_to_int(float pixels) {
+  const int truncated = static_cast<int>(pixels);
+  return truncated + (static_cast<float>(truncated) < pixels ? 1 : 0);
+}
+
 // Covers the pixels of row y whose centre has left <= x + 0.5 < right (the row's crossings of the
 // polygon's sides, pixels), within the width.
 void cover_span(int y, float left, float right, int width, CoveredPixels &covered) {
   if (!(left < right)) return;
-  const int from = std::max(static_cast<int>(std::ceil(left - 0.5f)), 0);
-  const int to = std::min(static_cast<int>(std::ceil(right - 0.5f)), width);  // past the end
+  const int from = std::max(ceil_to_int(left - 0.5f), 0);
+  const int to = std::min(ceil_to_int(right - 0.5f), width);  // past the end
   if (from < to) covered.cover(y, from, to);
 }
 
