@@ -107,12 +107,12 @@ struct SnappedCorners {
   }
 };
 
-// Of row `y`'s columns x0..x1 (the box of a triangle thinner than the snap), those whose centre
-// may pass its barycentric test, [from, to]: within a pixel of its longest side's line, and a
-// column more each way. A centre the test passes lies within the triangle's height (under 1/16
-// px) of that line, or the test's rounding beyond it: under 0.02 px, a relative 4e-7 of the
-// distances to the corners, which the guard band keeps under 30,000 px. Where that side is close
-// to level over the box, the whole row.
+// Of row `y`'s columns x0..x1 (the box of a triangle thinner than the snap, Glide screen), those
+// whose centre may pass its barycentric test, [from, to]: within a pixel of its longest side's
+// line, and a column more each way. A centre the test passes lies within the triangle's height
+// (under 1/16 px) of that line, or beyond it by the test's rounding: about 1e-6 of its distance
+// to the corners, under 0.05 px with the corners in the guard band (8 screens each way) of a
+// 1600x1200 screen. Where that side is close to level over the box, the whole row.
 void columns_near_longest_side(const ScreenCorners &corners, int y, int x0, int x1, int &from,
                                int &to) {
   constexpr float kBand = 1.0f;  // pixels from the line
@@ -124,8 +124,11 @@ void columns_near_longest_side(const ScreenCorners &corners, int y, int x0, int 
   if (!(half < static_cast<float>(x1 - x0 + 2))) return;
   const float centre = static_cast<float>(y) + 0.5f;
   const float middle = a.x + side.x * (centre - a.y) / side.y;  // where the line crosses the row
-  from = std::max(x0, static_cast<int>(std::floor(std::max(middle - half, static_cast<float>(x0) - 1.0f) - 0.5f)) - 1);
-  to = std::min(x1, static_cast<int>(std::ceil(std::min(middle + half, static_cast<float>(x1) + 1.0f) - 0.5f)) + 1);
+  // The band's ends kept to a column beyond the box, so that they convert to int.
+  const float left = std::max(middle - half, static_cast<float>(x0) - 1.0f);
+  const float right = std::min(middle + half, static_cast<float>(x1) + 1.0f);
+  from = std::max(x0, static_cast<int>(std::floor(left - 0.5f)) - 1);
+  to = std::min(x1, static_cast<int>(std::ceil(right - 0.5f)) + 1);
 }
 
 }  // namespace

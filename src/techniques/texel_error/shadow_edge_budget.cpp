@@ -38,7 +38,9 @@ class CoveredPixels {
   }
   std::size_t count() const {
     std::size_t pixels = 0;
-    for (const std::uint64_t word : bits_) pixels += static_cast<std::size_t>(__builtin_popcountll(word));
+    for (const std::uint64_t word : bits_) {
+      pixels += static_cast<std::size_t>(__builtin_popcountll(word));
+    }
     return pixels;
   }
 
