@@ -61,31 +61,43 @@ float cross(const glm::vec2 &a, const glm::vec2 &b, const glm::vec2 &p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-// A receiver triangle's screen corners as they are and as the Voodoo snaps them (pixels).
+// A receiver triangle's screen corners as they are (pixels).
 struct ScreenCorners {
-  glm::vec2 exact[3], snapped[3];
-  float area = 0.0f, snapped_area = 0.0f;  // twice the signed areas
+  glm::vec2 exact[3];
+  float area = 0.0f;  // twice the signed area
+  int longest = 0;    // its longest side, exact[longest] -> exact[(longest + 1) % 3]
+  float longest_squared = 0.0f;
   explicit ScreenCorners(const GrVertex *v) {
-    for (int k = 0; k < 3; ++k) {
-      exact[k] = {v[k].x, v[k].y};
-      snapped[k] = {snap_to_subpixel(v[k].x), snap_to_subpixel(v[k].y)};
-    }
+    for (int k = 0; k < 3; ++k) exact[k] = {v[k].x, v[k].y};
     area = cross(exact[0], exact[1], exact[2]);
-    snapped_area = cross(snapped[0], snapped[1], snapped[2]);
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec2 side = exact[(k + 1) % 3] - exact[k];
+      const float squared = glm::dot(side, side);
+      if (squared > longest_squared) longest_squared = squared, longest = k;
+    }
   }
   // Its least height under 1/16 px (area / longest side, compared squared).
   bool thin() const {
-    float longest = 0.0f;
-    for (int k = 0; k < 3; ++k) {
-      const glm::vec2 side = exact[(k + 1) % 3] - exact[k];
-      longest = std::max(longest, glm::dot(side, side));
-    }
     constexpr float kSnap = 1.0f / 16.0f;  // pixels
-    return area * area < kSnap * kSnap * longest;
+    return area * area < kSnap * kSnap * longest_squared;
+  }
+};
+
+// The same triangle as the Voodoo snaps its corners (pixels).
+struct SnappedCorners {
+  glm::vec2 snapped[3];
+  bool drawn = false;  // a snapped area, wound as the exact triangle
+  float snapped_area = 0.0f;  // twice the signed area
+  explicit SnappedCorners(const ScreenCorners &corners) {
+    for (int k = 0; k < 3; ++k) {
+      snapped[k] = {snap_to_subpixel(corners.exact[k].x), snap_to_subpixel(corners.exact[k].y)};
+    }
+    snapped_area = cross(snapped[0], snapped[1], snapped[2]);
+    drawn = snapped_area != 0.0f && (snapped_area > 0.0f) == (corners.area > 0.0f);
   }
   // The snapped triangle holds `centre` strictly inside, wound as the exact one.
-  bool snapped_holds(const glm::vec2 &centre) const {
-    if (snapped_area == 0.0f || (snapped_area > 0.0f) != (area > 0.0f)) return false;
+  bool holds(const glm::vec2 &centre) const {
+    if (!drawn) return false;
     for (int k = 0; k < 3; ++k) {
       if (!(cross(snapped[(k + 1) % 3], snapped[(k + 2) % 3], centre) * snapped_area > 0.0f)) {
         return false;
@@ -95,34 +107,62 @@ struct ScreenCorners {
   }
 };
 
+// Of row `y`'s columns x0..x1 (the box of a triangle thinner than the snap, Glide screen), those
+// whose centre may pass its barycentric test, [from, to]: within a pixel of its longest side's
+// line, and a column more each way. A centre the test passes lies within the triangle's height
+// (under 1/16 px) of that line, or beyond it by the test's rounding: about 1e-6 of its distance
+// to the corners, under 0.05 px with the corners in the guard band (8 screens each way) of a
+// 1600x1200 screen. Where that side is close to level over the box, the whole row.
+void columns_near_longest_side(const ScreenCorners &corners, int y, int x0, int x1, int &from,
+                               int &to) {
+  constexpr float kBand = 1.0f;  // pixels from the line
+  from = x0, to = x1;
+  const glm::vec2 &a = corners.exact[corners.longest];
+  const glm::vec2 side = corners.exact[(corners.longest + 1) % 3] - a;
+  // Half the band's width along the row (pixels): infinite for a level side.
+  const float half = kBand * std::sqrt(corners.longest_squared) / std::abs(side.y);
+  if (!(half < static_cast<float>(x1 - x0 + 2))) return;
+  const float centre = static_cast<float>(y) + 0.5f;
+  const float middle = a.x + side.x * (centre - a.y) / side.y;  // where the line crosses the row
+  // The band's ends kept to a column beyond the box, so that they convert to int.
+  const float left = std::max(middle - half, static_cast<float>(x0) - 1.0f);
+  const float right = std::min(middle + half, static_cast<float>(x1) + 1.0f);
+  from = std::max(x0, static_cast<int>(std::floor(left - 0.5f)) - 1);
+  to = std::min(x1, static_cast<int>(std::ceil(right - 0.5f)) + 1);
+}
+
 }  // namespace
 
 int centres_lost_to_snap(const LightView &view, const std::vector<ShadowTriangle> &triangles,
                          bool projective, int width, int height) {
   std::vector<glm::vec2> lost;  // the centres, Glide screen pixels
-  std::vector<const ShadowTriangle *> thick;
+  std::vector<ScreenCorners> thick;
   for (const ShadowTriangle &triangle : triangles) {
     if (!triangle.reaches_caster) continue;
     const ScreenCorners corners(triangle.v);
     if (corners.area == 0.0f) continue;  // seen edge-on: it holds no centre to lose
     if (!corners.thin()) {
-      thick.push_back(&triangle);
+      thick.push_back(corners);
       continue;
     }
+    const SnappedCorners snapped(corners);
     const glm::vec2 low = glm::min(corners.exact[0], glm::min(corners.exact[1], corners.exact[2]));
     const glm::vec2 high = glm::max(corners.exact[0], glm::max(corners.exact[1], corners.exact[2]));
     const int x0 = std::max(static_cast<int>(std::ceil(low.x - 0.5f)), 0);
     const int x1 = std::min(static_cast<int>(std::floor(high.x - 0.5f)), width - 1);
     const int y0 = std::max(static_cast<int>(std::ceil(low.y - 0.5f)), 0);
     const int y1 = std::min(static_cast<int>(std::floor(high.y - 0.5f)), height - 1);
+    if (x0 > x1) continue;
     for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
+      int from, to;
+      columns_near_longest_side(corners, y, x0, x1, from, to);
+      for (int x = from; x <= to; ++x) {
         const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
         float w[3];  // screen barycentric weights in the exact triangle
         for (int k = 0; k < 3; ++k) {
           w[k] = cross(corners.exact[(k + 1) % 3], corners.exact[(k + 2) % 3], centre) / corners.area;
         }
-        if (w[0] < 0.0f || w[1] < 0.0f || w[2] < 0.0f || corners.snapped_holds(centre)) continue;
+        if (w[0] < 0.0f || w[1] < 0.0f || w[2] < 0.0f || snapped.holds(centre)) continue;
         // Its (s, t) there (Glide texture units, 256 across), as step 5 would divide them.
         const GrVertex *v = triangle.v;
         float s = 0.0f, t = 0.0f, q = 0.0f;
@@ -135,13 +175,16 @@ int centres_lost_to_snap(const LightView &view, const std::vector<ShadowTriangle
       }
     }
   }
+  if (lost.empty()) return 0;
   // A centre that a triangle as thick as the snap draws takes that triangle's own (s, t),
   // moved by no more than 1/32 px spans there: not lost.
+  std::vector<SnappedCorners> drawn;
+  drawn.reserve(thick.size());
+  for (const ScreenCorners &corners : thick) drawn.emplace_back(corners);
   int count = 0;
   for (const glm::vec2 &centre : lost) {
-    count += std::none_of(thick.begin(), thick.end(), [&](const ShadowTriangle *t) {
-      return ScreenCorners(t->v).snapped_holds(centre);
-    });
+    count += std::none_of(drawn.begin(), drawn.end(),
+                          [&](const SnappedCorners &t) { return t.holds(centre); });
   }
   return count;
 }

@@ -14,33 +14,117 @@
 namespace gs {
 namespace {
 
-// Marks in `covered` (width x height, rows in Glide screen y) the pixels whose centre (x + 0.5,
-// y + 0.5) lies in the convex screen polygon `polygon` (pixels, already clipped to the screen).
-// A centre on a level side counts where the shim's rasterizer draws it: on the polygon's
-// bottom side (largest y), not its top (a floor's far triangles snapped to one row's centres).
+// The screen's covered pixels as bits, a row of whole words per screen row (pixel x of row y at
+// bit x % 64 of word y * words + x / 64; Glide screen, rows in y): a span sets its words, where
+// a byte a pixel cost a fill call a span and a count over every pixel of the screen.
+class CoveredPixels {
+ public:
+  CoveredPixels(int width, int height)
+      : words_(static_cast<std::size_t>(std::max(width, 0) + 63) / 64),
+        bits_(words_ * static_cast<std::size_t>(std::max(height, 0)), 0) {}
+  // Pixels from <= x < to of row y (0 <= from < to <= width).
+  void cover(int y, int from, int to) {
+    std::uint64_t *row = bits_.data() + static_cast<std::size_t>(y) * words_;
+    const int first = from / 64, last = (to - 1) / 64;
+    const std::uint64_t head = ~std::uint64_t{0} << (from % 64);
+    const std::uint64_t tail = ~std::uint64_t{0} >> (63 - (to - 1) % 64);
+    if (first == last) {
+      row[first] |= head & tail;
+      return;
+    }
+    row[first] |= head;
+    for (int word = first + 1; word < last; ++word) row[word] = ~std::uint64_t{0};
+    row[last] |= tail;
+  }
+  std::size_t count() const {
+    std::size_t pixels = 0;
+    for (const std::uint64_t word : bits_) {
+      pixels += static_cast<std::size_t>(__builtin_popcountll(word));
+    }
+    return pixels;
+  }
+
+ private:
+  std::size_t words_;
+  std::vector<std::uint64_t> bits_;
+};
+
+// Where side p -> q of a polygon crosses the centre line of a row (y = centre, pixels), p and q
+// on either side of it: the one expression both kinds of polygon below use, in the side's own
+// direction, so that a triangle's spans are the general polygon's to the bit.
+float crossing(const glm::vec2 &p, const glm::vec2 &q, float centre) {
+  return p.x + (centre - p.y) * (q.x - p.x) / (q.y - p.y);
+}
+
+// The rows whose centre y + 0.5 lies in low < y + 0.5 <= high, within the screen's height:
+// [first, past).
+void rows_between(float low, float high, int height, int &first, int &past) {
+  first = std::max(static_cast<int>(std::floor(low - 0.5f)) + 1, 0);
+  past = std::min(static_cast<int>(std::floor(high - 0.5f)) + 1, height);
+}
+
+// std::ceil(pixels) as an int, for a value well inside int's range (a crossing of a polygon
+// clipped to the screen): truncation leaves a positive fraction's value one short.
+int ceil_to_int(float pixels) {
+  const int truncated = static_cast<int>(pixels);
+  return truncated + (static_cast<float>(truncated) < pixels ? 1 : 0);
+}
+
+// Covers the pixels of row y whose centre has left <= x + 0.5 < right (the row's crossings of the
+// polygon's sides, pixels), within the width.
+void cover_span(int y, float left, float right, int width, CoveredPixels &covered) {
+  if (!(left < right)) return;
+  const int from = std::max(ceil_to_int(left - 0.5f), 0);
+  const int to = std::min(ceil_to_int(right - 0.5f), width);  // past the end
+  if (from < to) covered.cover(y, from, to);
+}
+
+// Marks in `covered` the pixels whose centre (x + 0.5, y + 0.5) lies in the convex screen polygon
+// `polygon` (pixels, already clipped to the screen). A centre on a level side counts where the
+// shim's rasterizer draws it: on the polygon's bottom side (largest y), not its top (a floor's
+// far triangles snapped to one row's centres). A row's centre line crosses the sides p -> q
+// with p.y < centre <= q.y or q.y < centre <= p.y; its span runs between the crossings.
 void cover_convex_polygon(const std::vector<glm::vec2> &polygon, int width, int height,
-                          std::vector<std::uint8_t> &covered) {
+                          CoveredPixels &covered) {
   if (polygon.size() < 3) return;
   float low = INFINITY, high = -INFINITY;
   for (const glm::vec2 &p : polygon) low = std::min(low, p.y), high = std::max(high, p.y);
-  // The rows whose centre y + 0.5 has low < y + 0.5 <= high.
-  const int first_row = std::max(static_cast<int>(std::floor(low - 0.5f)) + 1, 0);
-  const int last_row = std::min(static_cast<int>(std::floor(high - 0.5f)) + 1, height);  // past the end
-  for (int y = first_row; y < last_row; ++y) {
+  int first_row, past_row;
+  rows_between(low, high, height, first_row, past_row);
+  if (polygon.size() == 3) {
+    // A triangle (most polygons): its sides sorted by their lowest y, the longest in y crosses
+    // every row and one of the other two each row, the upper one through the middle corner's y.
+    const glm::vec2 *side[3][2];
+    for (int i = 0; i < 3; ++i) side[i][0] = &polygon[i], side[i][1] = &polygon[(i + 1) % 3];
+    const auto top = [&](int i) { return std::min(side[i][0]->y, side[i][1]->y); };
+    const auto bottom = [&](int i) { return std::max(side[i][0]->y, side[i][1]->y); };
+    int spanning = 0;  // the side from the lowest y to the highest
+    for (int i = 1; i < 3; ++i) {
+      if (top(i) == low && bottom(i) == high) spanning = i;
+    }
+    if (!(top(spanning) == low && bottom(spanning) == high)) return;  // no row: all level
+    int upper = (spanning + 1) % 3, lower = (spanning + 2) % 3;
+    if (top(lower) < top(upper)) std::swap(upper, lower);
+    const float middle = bottom(upper);  // the middle corner's y
+    for (int y = first_row; y < past_row; ++y) {
+      const float centre = static_cast<float>(y) + 0.5f;
+      const int other = centre <= middle ? upper : lower;
+      const float a = crossing(*side[spanning][0], *side[spanning][1], centre);
+      const float b = crossing(*side[other][0], *side[other][1], centre);
+      cover_span(y, std::min(a, b), std::max(a, b), width, covered);
+    }
+    return;
+  }
+  for (int y = first_row; y < past_row; ++y) {
     const float centre = static_cast<float>(y) + 0.5f;
     float left = INFINITY, right = -INFINITY;  // where the row's centre line crosses the sides
     for (std::size_t i = 0; i < polygon.size(); ++i) {
       const glm::vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
       if ((p.y < centre) == (q.y < centre)) continue;
-      const float x = p.x + (centre - p.y) * (q.x - p.x) / (q.y - p.y);
+      const float x = crossing(p, q, centre);
       left = std::min(left, x), right = std::max(right, x);
     }
-    if (!(left < right)) continue;
-    const int from = std::max(static_cast<int>(std::ceil(left - 0.5f)), 0);
-    const int to = std::min(static_cast<int>(std::ceil(right - 0.5f)), width);  // past the end
-    if (from >= to) continue;
-    std::uint8_t *row = covered.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-    std::fill(row + from, row + to, std::uint8_t{1});
+    cover_span(y, left, right, width, covered);
   }
 }
 
@@ -59,9 +143,7 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
   // 9 of 487). The pixels the snap adds beyond the exact outline (a centre within 1/32 px of
   // it) are counted too; covering the exact triangles as well to leave those out cost 8.5 M
   // instructions of the demo's shadowed frame and moved no budget of the project's scenes.
-  const std::size_t count = static_cast<std::size_t>(std::max(width, 0)) *
-                            static_cast<std::size_t>(std::max(height, 0));
-  std::vector<std::uint8_t> drawn(count, 0);
+  CoveredPixels drawn(width, height);
   std::vector<glm::vec2> polygon, clipped;
   std::vector<ClipVertex> camera_polygon, scratch;
   std::vector<GrVertex> screen;
@@ -96,7 +178,7 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
       cover_convex_polygon(polygon, width, height, drawn);
     }
   }
-  return static_cast<float>(std::count(drawn.begin(), drawn.end(), std::uint8_t{1}));
+  return static_cast<float>(drawn.count());
 }
 
 float edge_error_budget(const Scene &scene, const FrameGeometry &frame) {
