@@ -10,6 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace gs::depth_map {
@@ -25,6 +28,10 @@ constexpr double kReachTexels = 2.0;
 constexpr double kSubdividePx = 1.0;
 constexpr int kSubdivisions = 5;
 
+// The screen cells (pixels wide) the edge samples are found by, for the band beside a wrong point:
+// wider than a band and a sample's half length.
+constexpr double kBandCellPx = 4.0;
+
 // A point of a shadow edge on its receiver: where the light's ray through a sample of a
 // silhouette segment first meets a surface behind it (world), that surface's plane (unit normal),
 // the edge's direction in that plane (world, unit), its share of the edge's length on screen
@@ -32,7 +39,8 @@ constexpr int kSubdivisions = 5;
 struct EdgeSample {
   dvec3 point{0.0}, along{0.0}, normal{0.0};
   double screen_length = 0.0, band = 0.0;
-  glm::dvec2 screen_along{0.0};
+  glm::dvec2 screen_point{0.0}, screen_along{0.0};  // screen_of: x right, y up, from the centre
+  bool within_reach = false;  // of the biases: walked across
 };
 
 // The triangle `k` of `mesh` (world).
@@ -114,16 +122,6 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
         const glm::dvec2 screen = screen_of(to) - screen_of(from);
         const double length = glm::length(screen);
         if (!(length > 1e-3) || (split && length > kSubdividePx)) return length;
-        // Within the biases' reach: a texel holding the caster within the lookup's reach of the
-        // edge (and a texel more, where the walk may begin) stores it at or beyond the
-        // receiver's lowered depth there.
-        glm::dvec2 texels;
-        double behind;
-        if (!reach.in_map(point, texels, behind)) return length;
-        const double lowered = receiver_lowering(corner[0], corner[1], corner[2],
-                                                 meshes[hit_body].object->casts_shadow, to_map,
-                                                 side, options);
-        if (!reach.holds_beyond(texels, kReachTexels, 0, behind - lowered)) return length;
         // The band of a shadow edge with receiver pixels on both sides (shadow_edge_error.cpp).
         const glm::dvec2 across = glm::abs(glm::dvec2(screen.y, -screen.x)) / length;
         EdgeSample sample;
@@ -131,8 +129,20 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
         sample.along = glm::normalize(to - from);
         sample.normal = normal;
         sample.screen_length = length;
+        sample.screen_point = screen_of(point);
         sample.screen_along = screen / length;
         sample.band = std::max(across.x, across.y) + across.x + across.y;
+        // Within the biases' reach: a texel holding the caster within the lookup's reach of the
+        // edge (and a texel more, where the walk may begin) stores it at or beyond the
+        // receiver's lowered depth there.
+        glm::dvec2 texels;
+        double behind;
+        if (reach.in_map(point, texels, behind)) {
+          const double lowered = receiver_lowering(corner[0], corner[1], corner[2],
+                                                   meshes[hit_body].object->casts_shadow, to_map,
+                                                   side, options);
+          sample.within_reach = reach.holds_beyond(texels, kReachTexels, 0, behind - lowered);
+        }
         by_receiver[hit_body].push_back(sample);
         return length;
       };
@@ -164,13 +174,44 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
       if (samples.empty()) continue;
       const WorldMesh &receiver = meshes[receiver_at];
       const RayBody &surface = bodies[receiver_at];
+      if (std::none_of(samples.begin(), samples.end(), [](const EdgeSample &e) { return e.within_reach; })) continue;
+      // The samples by screen cell (kBandCellPx wide; x right, rows from the top), to find the
+      // edges near a wrong point: a point in another edge's band there is in the measure's band.
+      std::map<std::pair<long, long>, std::vector<std::size_t>> near;
+      auto cell_of = [&](const glm::dvec2 &q) {
+        return std::make_pair(static_cast<long>(std::floor((q.x + 0.5 * space.pixels.x) / kBandCellPx)),
+                              static_cast<long>(std::floor((0.5 * space.pixels.y - q.y) / kBandCellPx)));
+      };
+      for (std::size_t k = 0; k < samples.size(); ++k) near[cell_of(samples[k].screen_point)].push_back(k);
+      auto in_other_band = [&](const glm::dvec2 &q) {
+        const auto [cx, cy] = cell_of(q);
+        for (long dy = -1; dy <= 1; ++dy) {
+          for (long dx = -1; dx <= 1; ++dx) {
+            const auto found = near.find({cx + dx, cy + dy});
+            if (found == near.end()) continue;
+            for (const std::size_t k : found->second) {
+              const EdgeSample &e = samples[k];
+              const glm::dvec2 offset = q - e.screen_point;
+              if (std::abs(offset.x * e.screen_along.y - offset.y * e.screen_along.x) <= e.band &&
+                  std::abs(glm::dot(offset, e.screen_along)) <= 0.5 * e.screen_length + 0.5) {
+                return true;
+              }
+            }
+          }
+        }
+        return false;
+      };
       EdgeErrorEstimate estimate;
       for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
         if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
         const int map_side = side << size;
         MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
-        double pixels = 0.0;
+        // The screen the wrong runs cover, in cells a quarter of a pixel wide (x right, rows
+        // from the top), each once: beside a corner of the shadow a walk across one edge runs
+        // along the band of the next, which that edge's own walks cover too.
+        std::set<std::pair<long, long>> covered;
         for (const EdgeSample &sample : samples) {
+          if (!sample.within_reach) continue;
           glm::dvec2 edge_texels;
           double edge_depth;
           if (!replay.in_map(sample.point, edge_texels, edge_depth)) continue;
@@ -178,29 +219,33 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
           const dvec3 across = glm::normalize(glm::cross(sample.normal, sample.along));
           // Walks the receiver from the edge along `direction` (world, unit, in the edge's
           // plane; each point brought back onto the receiver along the light's ray) for at most
-          // eight texels; the screen extent (pixels, across the edge) of the run of wrong points
-          // from the edge, or a negative one where none began within a texel of it. `ends_at_edge`:
-          // the run ends where the truth turns (another edge, whose band it is in too).
-          auto wrong_run = [&](const dvec3 &direction, bool &ends_at_edge) -> double {
+          // eight texels: the run of wrong points from the edge (screen positions, the edge's
+          // first and the run's far end last; none where no run began within a texel of it).
+          // `ends_at_edge`: the run ends where the truth turns (another edge, whose band it is
+          // in too).
+          auto wrong_run = [&](const dvec3 &direction, bool &ends_at_edge) {
+            std::vector<glm::dvec2> run;
             const double probe_metres = 1e-3 * std::max(glm::length(sample.point - light_position), 1e-6);
             glm::dvec2 next_texels;
             double next_depth;
-            if (!replay.in_map(sample.point + direction * probe_metres, next_texels, next_depth)) return -1.0;
+            if (!replay.in_map(sample.point + direction * probe_metres, next_texels, next_depth)) return run;
             const double texels_per_metre = glm::length(next_texels - edge_texels) / probe_metres;
-            if (!(texels_per_metre > 0.0)) return -1.0;
-            double farthest = 0.0;  // texels: where the last wrong point lies
-            dvec3 farthest_point = sample.point;
+            if (!(texels_per_metre > 0.0)) return run;
+            run.push_back(edge_screen);
             bool wrong_seen = false, wrong_truth = false;
             ends_at_edge = false;
+            dvec3 far_end(0.0);  // world: half a step past the last wrong point
             for (int step = 1; step <= 20; ++step) {
               const double at = step <= 8 ? 0.25 * step : 2.0 + 0.5 * (step - 8);  // texels
               const dvec3 planar = sample.point + direction * (at / texels_per_metre);
-              // Back onto the receiver: its surface the light's ray meets within a tenth of the
-              // distance from the plane's point.
+              // Back onto the receiver: the first of its surface on the light's ray, no farther
+              // from the plane's point than the walk has come (past its rim, or where the
+              // light's ray passes to another part of it, the walk ends).
               const dvec3 ray = planar - light_position;
-              double t = 1.1;
+              const double slack = at / texels_per_metre / glm::length(ray);
+              double t = 1.0 + slack;
               std::size_t k = 0;
-              if (!surface.triangles.nearest(light_position, ray, 0.9, t, k)) break;
+              if (!surface.triangles.nearest(light_position, ray, 1.0 - slack, t, k)) break;
               const dvec3 point = light_position + ray * t;
               glm::vec3 corner[3];
               corners_of(receiver, k, corner);
@@ -233,28 +278,46 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
                 wrong = truth != replay.shadowed(texels, depth - lowered);
               }
               if (wrong) {
-                farthest = at + (step <= 8 ? 0.125 : 0.25);
-                farthest_point = light_position + (sample.point + direction * (farthest / texels_per_metre) -
-                                                   light_position) * t;
+                run.push_back(screen_of(point));
+                const double half = step <= 8 ? 0.125 : 0.25;  // texels
+                far_end = light_position + (planar + direction * (half / texels_per_metre) - light_position) * t;
                 wrong_seen = true, wrong_truth = truth;
               } else if (wrong_seen || at >= 1.0) {
                 ends_at_edge = wrong_seen && truth != wrong_truth;
                 break;
               }
             }
-            if (!wrong_seen) return -1.0;
-            const glm::dvec2 offset = screen_of(farthest_point) - edge_screen;
-            return std::abs(offset.x * sample.screen_along.y - offset.y * sample.screen_along.x);
+            if (!wrong_seen) return std::vector<glm::dvec2>();
+            run.push_back(screen_of(far_end));
+            return run;
           };
           for (const double way : {1.0, -1.0}) {
             bool ends_at_edge = false;
-            const double extent = wrong_run(across * way, ends_at_edge);
-            if (extent < 0.0) continue;
+            const std::vector<glm::dvec2> run = wrong_run(across * way, ends_at_edge);
             const double band = sample.band * (ends_at_edge ? 2.0 : 1.0);
-            pixels += std::max(extent - band, 0.0) * sample.screen_length;
+            // The run beyond the band from the edge (across it on screen), as wide along the
+            // edge as the sample's share of it, marked a quarter of a pixel at a time.
+            for (std::size_t k = 1; k < run.size(); ++k) {
+              const glm::dvec2 from = run[k - 1], to = run[k];
+              const int parts = std::max(1, static_cast<int>(std::ceil(4.0 * glm::length(to - from))));
+              const int wide = std::max(1, static_cast<int>(std::ceil(4.0 * sample.screen_length)));
+              for (int j = 1; j <= parts; ++j) {
+                const glm::dvec2 q = from + (to - from) * (static_cast<double>(j) / parts);
+                const glm::dvec2 offset = q - edge_screen;
+                if (!(std::abs(offset.x * sample.screen_along.y - offset.y * sample.screen_along.x) > band) ||
+                    in_other_band(q)) {
+                  continue;
+                }
+                for (int i = 0; i < wide; ++i) {
+                  const glm::dvec2 c = q + sample.screen_along * (sample.screen_length * ((i + 0.5) / wide - 0.5));
+                  covered.emplace(static_cast<long>(std::floor(4.0 * (c.x + 0.5 * space.pixels.x))),
+                                  static_cast<long>(std::floor(4.0 * (0.5 * space.pixels.y - c.y))));
+                }
+              }
+            }
           }
         }
-        estimate.pixels[size] = static_cast<float>(pixels);
+        estimate.pixels[size] = static_cast<float>(covered.size()) / 16.0f;
       }
       ContactError &error = result[footprint.caster];
       if (estimate.pixels[0] > most) most = estimate.pixels[0], error.receiver = receiver_at;
