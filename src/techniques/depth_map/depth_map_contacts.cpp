@@ -173,10 +173,7 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
         sample.shadowed_across[1] = shadowed_across(sample, -across);
       }
       const std::size_t receiver_index = static_cast<std::size_t>(receiver.object - scene.objects.data());
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
         double pixels = 0.0;
         for (const FootSample &sample : samples) {
@@ -300,8 +297,8 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
             pixels += error * sample.screen_length;
           }
         }
-        estimate.pixels[size] = static_cast<float>(pixels);
-      }
+        return static_cast<double>(pixels);
+      });
       ContactError &error = result[caster_index];
       if (estimate.pixels[0] > most) most = estimate.pixels[0], error.receiver = receiver_index;
       error.pixels.add(estimate);

@@ -201,10 +201,7 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
         }
         return false;
       };
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
         // The screen the wrong runs cover, in cells a quarter of a pixel wide (x right, rows
         // from the top), each once: beside a corner of the shadow a walk across one edge runs
@@ -317,8 +314,8 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
             }
           }
         }
-        estimate.pixels[size] = static_cast<float>(covered.size()) / 16.0f;
-      }
+        return static_cast<double>(covered.size()) / 16.0;
+      });
       ContactError &error = result[footprint.caster];
       if (estimate.pixels[0] > most) most = estimate.pixels[0], error.receiver = receiver_at;
       error.pixels.add(estimate);

@@ -177,10 +177,7 @@ std::vector<ContactError> lowered_errors(const Scene &scene, const std::vector<W
     }
     const OtherShadows others(scene, light);
     for (const auto &[caster_at, pixels] : by_caster) {
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, meshes[caster_at], receiver);
         long interior = 0;
         for (const GrazedPixel &pixel : pixels) {
@@ -195,8 +192,8 @@ std::vector<ContactError> lowered_errors(const Scene &scene, const std::vector<W
           if (others.hold(bodies, receiver_at, pixel.point, normal) || in_band(pixel.x, pixel.y)) continue;
           ++interior;
         }
-        estimate.pixels[size] = static_cast<float>(interior);
-      }
+        return static_cast<double>(interior);
+      });
       ContactError &error = result[caster_at];
       if (estimate.pixels[0] > error.pixels.pixels[0]) error.receiver = receiver_at;
       error.pixels.add(estimate);

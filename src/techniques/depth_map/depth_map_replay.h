@@ -11,6 +11,7 @@
 #include "techniques/depth_map/depth_map_passes.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
+#include "techniques/texel_error/shadow_edge_error.h"
 #include "techniques/texel_error/texel_footprint.h"
 #include "techniques/depth_map/triangle_bvh.h"
 
@@ -213,6 +214,18 @@ inline MapReplay caster_replay(const LightFrustum &frustum, const SpotLight &lig
   replay.add(caster, frustum);
   if (receiver.object->casts_shadow && &receiver != &caster) replay.add(receiver, frustum);
   return replay;
+}
+
+// An estimate at the map's `side` and at 2, 4 and 8 times it: `count(map_side)` at each (screen
+// pixels), and no larger size tried where the side's own finds nothing (none to name).
+template <typename Count>
+EdgeErrorEstimate estimate_by_size(int side, Count &&count) {
+  EdgeErrorEstimate estimate;
+  for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+    if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;
+    estimate.pixels[size] = static_cast<float>(count(side << size));
+  }
+  return estimate;
 }
 
 // The r/q a receiver triangle (corners a, b, c, world) compares lowered by in the `side`-texel

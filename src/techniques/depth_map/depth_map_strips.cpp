@@ -165,10 +165,7 @@ std::vector<ContactError> strip_errors(const Scene &scene,
         }
         return false;
       };
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
         long interior = 0;
         for (std::size_t i = 0; i < pixels.size(); ++i) {
@@ -187,8 +184,8 @@ std::vector<ContactError> strip_errors(const Scene &scene,
           }
           if (!band) ++interior;
         }
-        estimate.pixels[size] = static_cast<float>(interior);
-      }
+        return static_cast<double>(interior);
+      });
       ContactError &error = result[static_cast<std::size_t>(caster.object - scene.objects.data())];
       if (estimate.pixels[0] > error.pixels.pixels[0]) {
         error.receiver = static_cast<std::size_t>(receiver.object - scene.objects.data());
