@@ -1,7 +1,8 @@
 // The depth map's error beside the shadow edges of a caster close over its receiver
-// (depth_map_hover.h). Spaces: world (meshes, planes; rays in double); light view (depths in
-// metres, for the bound); the map's texture coordinates (s, t, r, q: s/q and t/q times the side
-// are texels, r/q the stored depth 0..1); camera clip; screen pixels.
+// (depth_map_hover.h). Spaces: world (meshes, planes; rays in double); the map's texture
+// coordinates (s, t, r, q: s/q and t/q times the side are texels, r/q the stored depth 0..1);
+// camera clip; screen pixels (screen_of: x right, y up, from the screen's centre; the covered
+// cells and pixels: x right, rows from the top).
 #include "techniques/depth_map/depth_map_hover.h"
 
 #include "techniques/depth_map/depth_map_replay.h"

@@ -27,14 +27,16 @@ namespace gs::depth_map {
 // map of `frustum` (light `light`, the technique's `options`; k = 0 .. 3) makes across the
 // shadow edges that the silhouette segments of `footprints` (caster_footprints) throw onto the
 // first surface behind them along the light's rays, where that surface receives, is not the
-// caster itself, faces the light, and lies near enough behind the segment that the caster's
-// depth pushed back by the whole bound (and a texel more, the lookup's reach) passes its own
-// lowered depth. At samples along each such edge the receiver is walked across it on both
-// sides (in its plane, each point brought back onto the receiver along the light's ray), and
-// each point the camera sees, where that caster alone decides for this light and no other
-// light's shadow holds it (the frame's mask is every light's shadow at once), compares a ray to
-// the light with the replayed lookup. The run of wrong points from the edge counts on screen
-// across the edge, beyond the band the error measure excuses beside a visible shadow edge.
+// caster itself and faces the light, and where a texel holding the caster within two texels of
+// the edge stores it (its slope term and facet push as drawn, or the bounded copy) at or beyond
+// that surface's lowered depth there: within the biases' reach. The edges are sampled about a
+// pixel apart on screen; at each sample the receiver is walked across the edge on both sides (in
+// its plane, each point brought back onto the receiver along the light's ray), and each point the
+// camera sees, where that caster alone decides for this light and no other light's shadow holds
+// it (the frame's mask is every light's shadow at once), compares a ray to the light with the
+// replayed lookup. The runs of wrong points from the edge count as the screen they cover (as
+// wide along the edge as the sample's share of it), once, beyond the band the error measure
+// excuses beside a visible shadow edge: the sample's own, and any other edge sample's near it.
 std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                        const std::vector<CasterFootprint> &footprints,
                                        const LightFrustum &frustum, const SpotLight &light,

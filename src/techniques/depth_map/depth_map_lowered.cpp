@@ -194,7 +194,7 @@ std::vector<ContactError> lowered_errors(const Scene &scene, const std::vector<W
         }
         return static_cast<double>(interior);
       });
-      ContactError &error = result[caster_at];
+      ContactError &error = result[caster_at];  // meshes follow the scene's objects
       if (estimate.pixels[0] > error.pixels.pixels[0]) error.receiver = receiver_at;
       error.pixels.add(estimate);
     }
