@@ -5,13 +5,13 @@
 // cells and pixels: x right, rows from the top).
 #include "techniques/depth_map/depth_map_hover.h"
 
+#include "techniques/depth_map/depth_map_frame_truth.h"
 #include "techniques/depth_map/depth_map_replay.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <set>
 #include <utility>
 #include <vector>
@@ -29,19 +29,16 @@ constexpr double kReachTexels = 2.0;
 constexpr double kSubdividePx = 1.0;
 constexpr int kSubdivisions = 5;
 
-// The screen cells (pixels wide) the edge samples are found by, for the band beside a wrong point:
-// wider than a band and a sample's half length.
-constexpr double kBandCellPx = 4.0;
-
 // A point of a shadow edge on its receiver: where the light's ray through a sample of a
 // silhouette segment first meets a surface behind it (world), that surface's plane (unit normal),
 // the edge's direction in that plane (world, unit), its share of the edge's length on screen
-// (pixels), its direction on screen (unit) and the band the measure excuses beside it (pixels).
+// (pixels), its direction on screen (unit; screen_of's axes) and the band the measure excuses
+// beside a shadow edge with receiver pixels on both sides (pixels across it,
+// shadow_edge_error.cpp).
 struct EdgeSample {
   dvec3 point{0.0}, along{0.0}, normal{0.0};
   double screen_length = 0.0, band = 0.0;
-  glm::dvec2 screen_point{0.0}, screen_along{0.0};  // screen_of: x right, y up, from the centre
-  bool within_reach = false;  // of the biases: walked across
+  glm::dvec2 screen_along{0.0};
 };
 
 // The triangle `k` of `mesh` (world).
@@ -63,6 +60,7 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
   const dvec3 camera(scene.camera.position), light_position(light.position);
   const LightBeam beam = light_beam(light);
   const OtherShadows others(scene, light);
+  FrameTruth frame(scene, meshes, bodies);  // the measure's band
   const glm::mat4 to_map = texture_from_clip() * frustum.projection * frustum.view;
   const MapReplay probe(frustum, light, side, options);  // positions in the map only
   auto screen_of = [&](const dvec3 &p) {
@@ -123,27 +121,24 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
         const glm::dvec2 screen = screen_of(to) - screen_of(from);
         const double length = glm::length(screen);
         if (!(length > 1e-3) || (split && length > kSubdividePx)) return length;
-        // The band of a shadow edge with receiver pixels on both sides (shadow_edge_error.cpp).
-        const glm::dvec2 across = glm::abs(glm::dvec2(screen.y, -screen.x)) / length;
-        EdgeSample sample;
-        sample.point = point;
-        sample.along = glm::normalize(to - from);
-        sample.normal = normal;
-        sample.screen_length = length;
-        sample.screen_point = screen_of(point);
-        sample.screen_along = screen / length;
-        sample.band = std::max(across.x, across.y) + across.x + across.y;
         // Within the biases' reach: a texel holding the caster within the lookup's reach of the
         // edge (and a texel more, where the walk may begin) stores it at or beyond the
         // receiver's lowered depth there.
         glm::dvec2 texels;
         double behind;
-        if (reach.in_map(point, texels, behind)) {
-          const double lowered = receiver_lowering(corner[0], corner[1], corner[2],
-                                                   meshes[hit_body].object->casts_shadow, to_map,
-                                                   side, options);
-          sample.within_reach = reach.holds_beyond(texels, kReachTexels, 0, behind - lowered);
-        }
+        if (!reach.in_map(point, texels, behind)) return length;
+        const double lowered = receiver_lowering(corner[0], corner[1], corner[2],
+                                                 meshes[hit_body].object->casts_shadow, to_map,
+                                                 side, options);
+        if (!reach.holds_beyond(texels, kReachTexels, 0, behind - lowered)) return length;
+        EdgeSample sample;
+        sample.point = point;
+        sample.along = glm::normalize(to - from);
+        sample.normal = normal;
+        sample.screen_length = length;
+        sample.screen_along = screen / length;
+        const glm::dvec2 across = glm::abs(glm::dvec2(screen.y, -screen.x)) / length;
+        sample.band = std::max(across.x, across.y) + across.x + across.y;
         by_receiver[hit_body].push_back(sample);
         return length;
       };
@@ -175,41 +170,13 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
       if (samples.empty()) continue;
       const WorldMesh &receiver = meshes[receiver_at];
       const RayBody &surface = bodies[receiver_at];
-      if (std::none_of(samples.begin(), samples.end(), [](const EdgeSample &e) { return e.within_reach; })) continue;
-      // The samples by screen cell (kBandCellPx wide; x right, rows from the top), to find the
-      // edges near a wrong point: a point in another edge's band there is in the measure's band.
-      std::map<std::pair<long, long>, std::vector<std::size_t>> near;
-      auto cell_of = [&](const glm::dvec2 &q) {
-        return std::make_pair(static_cast<long>(std::floor((q.x + 0.5 * space.pixels.x) / kBandCellPx)),
-                              static_cast<long>(std::floor((0.5 * space.pixels.y - q.y) / kBandCellPx)));
-      };
-      for (std::size_t k = 0; k < samples.size(); ++k) near[cell_of(samples[k].screen_point)].push_back(k);
-      auto in_other_band = [&](const glm::dvec2 &q) {
-        const auto [cx, cy] = cell_of(q);
-        for (long dy = -1; dy <= 1; ++dy) {
-          for (long dx = -1; dx <= 1; ++dx) {
-            const auto found = near.find({cx + dx, cy + dy});
-            if (found == near.end()) continue;
-            for (const std::size_t k : found->second) {
-              const EdgeSample &e = samples[k];
-              const glm::dvec2 offset = q - e.screen_point;
-              if (std::abs(offset.x * e.screen_along.y - offset.y * e.screen_along.x) <= e.band &&
-                  std::abs(glm::dot(offset, e.screen_along)) <= 0.5 * e.screen_length + 0.5) {
-                return true;
-              }
-            }
-          }
-        }
-        return false;
-      };
       const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
-        // The screen the wrong runs cover, in cells a quarter of a pixel wide (x right, rows
-        // from the top), each once: beside a corner of the shadow a walk across one edge runs
-        // along the band of the next, which that edge's own walks cover too.
+        // The screen the wrong runs cover outside the measure's band, in cells a quarter of a
+        // pixel wide (x right, rows from the top), each once: beside a corner of the shadow a
+        // walk across one edge runs along the next, which that edge's own walks cover too.
         std::set<std::pair<long, long>> covered;
         for (const EdgeSample &sample : samples) {
-          if (!sample.within_reach) continue;
           glm::dvec2 edge_texels;
           double edge_depth;
           if (!replay.in_map(sample.point, edge_texels, edge_depth)) continue;
@@ -219,9 +186,7 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
           // plane; each point brought back onto the receiver along the light's ray) for at most
           // eight texels: the run of wrong points from the edge (screen positions, the edge's
           // first and the run's far end last; none where no run began within a texel of it).
-          // `ends_at_edge`: the run ends where the truth turns (another edge, whose band it is
-          // in too).
-          auto wrong_run = [&](const dvec3 &direction, bool &ends_at_edge) {
+          auto wrong_run = [&](const dvec3 &direction) {
             std::vector<glm::dvec2> run;
             const double probe_metres = 1e-3 * std::max(glm::length(sample.point - light_position), 1e-6);
             glm::dvec2 next_texels;
@@ -231,7 +196,6 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
             if (!(texels_per_metre > 0.0)) return run;
             run.push_back(edge_screen);
             bool wrong_seen = false, wrong_truth = false;
-            ends_at_edge = false;
             dvec3 far_end(0.0);  // world: half a step past the last wrong point
             for (int step = 1; step <= 20; ++step) {
               const double at = step <= 8 ? 0.25 * step : 2.0 + 0.5 * (step - 8);  // texels
@@ -281,7 +245,6 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
                 far_end = light_position + (planar + direction * (half / texels_per_metre) - light_position) * t;
                 wrong_seen = true, wrong_truth = truth;
               } else if (wrong_seen || at >= 1.0) {
-                ends_at_edge = wrong_seen && truth != wrong_truth;
                 break;
               }
             }
@@ -290,26 +253,27 @@ std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<Wor
             return run;
           };
           for (const double way : {1.0, -1.0}) {
-            bool ends_at_edge = false;
-            const std::vector<glm::dvec2> run = wrong_run(across * way, ends_at_edge);
-            const double band = sample.band * (ends_at_edge ? 2.0 : 1.0);
-            // The run beyond the band from the edge (across it on screen), as wide along the
-            // edge as the sample's share of it, marked a quarter of a pixel at a time.
+            const std::vector<glm::dvec2> run = wrong_run(across * way);
+            // The run as wide along the edge as the sample's share of it, a quarter of a pixel
+            // at a time, beyond the edge's band from it (across it on screen) and where its pixel
+            // lies outside the measure's band (beside another edge, or a surface's outline the
+            // truth turns at).
+            const int wide = std::max(1, static_cast<int>(std::ceil(4.0 * sample.screen_length)));
             for (std::size_t k = 1; k < run.size(); ++k) {
               const glm::dvec2 from = run[k - 1], to = run[k];
               const int parts = std::max(1, static_cast<int>(std::ceil(4.0 * glm::length(to - from))));
-              const int wide = std::max(1, static_cast<int>(std::ceil(4.0 * sample.screen_length)));
               for (int j = 1; j <= parts; ++j) {
                 const glm::dvec2 q = from + (to - from) * (static_cast<double>(j) / parts);
                 const glm::dvec2 offset = q - edge_screen;
-                if (!(std::abs(offset.x * sample.screen_along.y - offset.y * sample.screen_along.x) > band) ||
-                    in_other_band(q)) {
-                  continue;
-                }
+                if (!(std::abs(offset.x * sample.screen_along.y - offset.y * sample.screen_along.x) > sample.band)) continue;
                 for (int i = 0; i < wide; ++i) {
                   const glm::dvec2 c = q + sample.screen_along * (sample.screen_length * ((i + 0.5) / wide - 0.5));
-                  covered.emplace(static_cast<long>(std::floor(4.0 * (c.x + 0.5 * space.pixels.x))),
-                                  static_cast<long>(std::floor(4.0 * (0.5 * space.pixels.y - c.y))));
+                  const double x = c.x + 0.5 * space.pixels.x, y = 0.5 * space.pixels.y - c.y;
+                  if (!(x >= 0.0 && y >= 0.0 && x < space.pixels.x && y < space.pixels.y) ||
+                      frame.in_band(static_cast<int>(x), static_cast<int>(y))) {
+                    continue;
+                  }
+                  covered.emplace(static_cast<long>(std::floor(4.0 * x)), static_cast<long>(std::floor(4.0 * y)));
                 }
               }
             }

@@ -19,14 +19,21 @@
 
 namespace gs::depth_map {
 
+// Whether the receiver triangle a, b, c (world; one that casts) compares its depth in the
+// `side`-texel map of `frustum` (light `light`, the technique's `options`) lowered by more than
+// two texels' widths at its centre's depth, along the light's ray: a triangle whose false light
+// lowered_errors counts, and the walks beside feet (depth_map_contacts.h) leave to it.
+bool lowered_past_texels(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c,
+                         const LightFrustum &frustum, const SpotLight &light, int side,
+                         const TechniqueOptions &options);
+
 // Per scene object (zero for one that casts nothing), with the receiver that has the most: the
 // pixels the `side << k`-texel map of `frustum` (light `light`, the technique's `options`;
 // k = 0 .. 3) leaves lit on receiver triangles that cast, face the light and the camera, and
-// are lowered by more than kGrazedLoweringTexels texels' widths at their depth (at the map's
-// side), where that caster alone shadows them from this light, no other light's shadow holds
-// them, and no pixel within one (Chebyshev) of them lies on the true shadow's boundary (a pixel
-// whose 4-neighbour the truth, from this light and the others, calls otherwise): the measure's
-// interior false light.
+// are lowered past two texels' widths (lowered_past_texels, at the map's side), where that
+// caster alone shadows them from this light, no other light's shadow holds them, and no pixel
+// within one (Chebyshev) of them lies on the true shadow's boundary (FrameTruth,
+// depth_map_frame_truth.h): the measure's interior false light.
 std::vector<ContactError> lowered_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                          const LightFrustum &frustum, const SpotLight &light,
                                          int side, const TechniqueOptions &options);
