@@ -35,8 +35,9 @@ namespace gs::depth_map {
 // camera sees, where that caster alone decides for this light and no other light's shadow holds
 // it (the frame's mask is every light's shadow at once), compares a ray to the light with the
 // replayed lookup. The runs of wrong points from the edge count as the screen they cover (as
-// wide along the edge as the sample's share of it), once, beyond the band the error measure
-// excuses beside a visible shadow edge: the sample's own, and any other edge sample's near it.
+// wide along the edge as the sample's share of it), once, beyond the band of a visible shadow
+// edge from the sample's own edge and outside the error measure's band as the truth draws it
+// (depth_map_frame_truth.h: beside other edges, and surfaces' outlines the truth turns at).
 std::vector<ContactError> hover_errors(const Scene &scene, const std::vector<WorldMesh> &meshes,
                                        const std::vector<CasterFootprint> &footprints,
                                        const LightFrustum &frustum, const SpotLight &light,
