@@ -3,7 +3,6 @@
 // s/q and t/q times the side are texels, r/q the stored depth 0..1); camera clip; screen pixels.
 #include "techniques/depth_map/depth_map_contacts.h"
 
-#include "techniques/depth_map/depth_map_lookup.h"
 #include "techniques/depth_map/depth_map_replay.h"
 #include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
@@ -53,12 +52,8 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
   const glm::dmat4 camera_clip(space.camera_clip);
   const dvec3 camera(scene.camera.position), light_position(light.position);
   const LightBeam beam = light_beam(light);
-  // The frame's other shadowing lights (slides cast none) with their beams: the mask is the
-  // union of every light's shadow, so what they shadow decides whether a foot is an edge there.
-  std::vector<std::pair<const SpotLight *, LightBeam>> others;
-  for (const SpotLight &other : scene.lights) {
-    if (&other != &light && !other.is_projector()) others.emplace_back(&other, light_beam(other));
-  }
+  // What the other lights shadow decides whether a foot is an edge in the frame's mask.
+  const OtherShadows others(scene, light);
   const glm::mat4 to_map = texture_from_clip() * frustum.projection * frustum.view;
   const int largest_side = side << (EdgeErrorEstimate::kSizes - 1);
   auto box_of = [](const std::vector<glm::vec3> &points, glm::vec3 &low, glm::vec3 &high) {
@@ -147,20 +142,8 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
         }
       }
       if (samples.empty()) continue;
-      // Whether another light shines on the receiver's point `point` (world; `normal` its
-      // plane's) and any caster, or the receiver itself, blocks it there.
       auto in_other_shadow = [&](const dvec3 &point, const dvec3 &normal) {
-        for (const auto &[other, other_beam] : others) {
-          const dvec3 from(other->position);
-          if (!(glm::dot(normal, from - point) > 0.0) ||
-              !inside_planes(other_beam.inner, glm::vec3(point))) {
-            continue;
-          }
-          for (std::size_t m = 0; m < bodies.size(); ++m) {
-            if ((bodies[m].casts || m == receiver_at) && blocks(bodies[m], from, point - from)) return true;
-          }
-        }
-        return false;
+        return others.hold(bodies, receiver_at, point, normal);
       };
       // Whether the frame shows the receiver a pixel from the foot of `sample` along `direction`
       // (world, unit, in its plane) in shadow: seen by the camera (past faces turned away from
@@ -190,25 +173,14 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
         sample.shadowed_across[1] = shadowed_across(sample, -across);
       }
       const std::size_t receiver_index = static_cast<std::size_t>(receiver.object - scene.objects.data());
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
-        MapReplay replay(frustum, light, map_side, options);
-        replay.add(caster, frustum);
-        if (receiver.object->casts_shadow) replay.add(receiver, frustum);
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
+        MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
         double pixels = 0.0;
         for (const FootSample &sample : samples) {
-          // The receiver's lowered depth (r/q): its receiver-plane bias when it casts.
-          double lowered = 0.0;
-          if (receiver.object->casts_shadow) {
-            const std::vector<glm::vec3> corners = {glm::vec3(sample.corner[0]), glm::vec3(sample.corner[1]),
-                                                    glm::vec3(sample.corner[2])};
-            const glm::vec4 plain = to_map * glm::vec4(corners[0], 1.0f);
-            const glm::vec4 biased =
-                biased_map_coords(corners, to_map, map_side, options.depth_bias_receiver)[0];
-            if (plain.w != 0.0f) lowered = static_cast<double>((plain.z - biased.z) / plain.w);
-          }
+          const double lowered =
+              receiver_lowering(glm::vec3(sample.corner[0]), glm::vec3(sample.corner[1]),
+                                glm::vec3(sample.corner[2]), receiver.object->casts_shadow,
+                                to_map, map_side, options);
           const dvec3 across = glm::normalize(glm::cross(sample.normal, sample.along));
           glm::dvec2 foot_texels;
           double foot_depth;
@@ -325,8 +297,8 @@ std::vector<ContactError> contact_errors(const Scene &scene, const std::vector<W
             pixels += error * sample.screen_length;
           }
         }
-        estimate.pixels[size] = static_cast<float>(pixels);
-      }
+        return static_cast<double>(pixels);
+      });
       ContactError &error = result[caster_index];
       if (estimate.pixels[0] > most) most = estimate.pixels[0], error.receiver = receiver_index;
       error.pixels.add(estimate);

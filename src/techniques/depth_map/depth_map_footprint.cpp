@@ -280,7 +280,8 @@ std::vector<CasterFootprint> caster_footprints(const Scene &scene,
                                         caster.edge_error_by_receiver.end());
     result.push_back({caster.index, shadow_footprint(std::move(caster.samples), ignored),
                       caster.edge_error,
-                      static_cast<std::size_t>(most - caster.edge_error_by_receiver.begin())});
+                      static_cast<std::size_t>(most - caster.edge_error_by_receiver.begin()),
+                      std::move(caster.segments)});
   }
   return result;
 }

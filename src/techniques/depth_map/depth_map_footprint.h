@@ -27,6 +27,9 @@ struct CasterFootprint {
   FootprintSample coarsest;
   EdgeErrorEstimate edge_error;
   std::size_t edge_error_receiver = 0;
+  // Its silhouette from the light (world), each edge once, for the estimates that replay the
+  // map's lookup across the shadow edges they throw (depth_map_hover.h).
+  std::vector<SilhouetteSegment> segments;
 };
 
 // Per caster of `meshes` (world space) that casts: the footprint of the `side`-texel map of

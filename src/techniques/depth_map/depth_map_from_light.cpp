@@ -7,6 +7,8 @@
 #include "techniques/depth_map/depth_map_contacts.h"
 #include "techniques/depth_map/depth_map_facets.h"
 #include "techniques/depth_map/depth_map_footprint.h"
+#include "techniques/depth_map/depth_map_hover.h"
+#include "techniques/depth_map/depth_map_lowered.h"
 #include "techniques/depth_map/depth_map_self_shadow.h"
 #include "techniques/depth_map/depth_map_strips.h"
 #include "techniques/geometry/light_beam.h"
@@ -206,13 +208,28 @@ void Passes::depth_from_lights(std::vector<std::string> &warnings,
         std::isinf(options_.depth_map_largest_footprint_px)
             ? std::vector<EdgeErrorEstimate>(scene_.objects.size())
             : self_shadow_errors(scene_, meshes_, frusta, scene_.lights[light], side, options_);
-    for (CasterFootprint &footprint :
-         caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup)) {
-      const ContactError &contact = contacts[footprint.caster];
-      if (contact.pixels.pixels[0] > footprint.edge_error.pixels[0]) {
-        footprint.edge_error_receiver = contact.receiver;
+    std::vector<CasterFootprint> footprints =
+        caster_footprints(scene_, meshes_, frustum, scene_.lights[light], side, lookup);
+    // So does the error across the shadow edges of casters close over their receivers, within
+    // the biases' reach (depth_map_hover.h).
+    const std::vector<ContactError> hovering =
+        std::isinf(options_.depth_map_largest_footprint_px)
+            ? std::vector<ContactError>(scene_.objects.size())
+            : hover_errors(scene_, meshes_, footprints, frustum, scene_.lights[light], side, options_);
+    // So does the false light inside shadows on receiver triangles the light grazes, whose
+    // receiver-plane bias passes a caster close in front of them (depth_map_lowered.h).
+    const std::vector<ContactError> lowered =
+        std::isinf(options_.depth_map_largest_footprint_px)
+            ? std::vector<ContactError>(scene_.objects.size())
+            : lowered_errors(scene_, meshes_, frustum, scene_.lights[light], side, options_);
+    for (CasterFootprint &footprint : footprints) {
+      for (const ContactError *extra :
+           {&contacts[footprint.caster], &hovering[footprint.caster], &lowered[footprint.caster]}) {
+        if (extra->pixels.pixels[0] > footprint.edge_error.pixels[0]) {
+          footprint.edge_error_receiver = extra->receiver;
+        }
+        footprint.edge_error.add(extra->pixels);
       }
-      footprint.edge_error.add(contact.pixels);
       const ContactError &strip = strips[footprint.caster];
       if (strip.pixels.pixels[0] > footprint.edge_error.pixels[0]) {
         footprint.edge_error_receiver = strip.receiver;

@@ -7,8 +7,11 @@
 #pragma once
 
 #include "techniques/depth_map/depth_map_facets.h"
+#include "techniques/depth_map/depth_map_lookup.h"
 #include "techniques/depth_map/depth_map_passes.h"
+#include "techniques/geometry/light_beam.h"
 #include "techniques/geometry/projection.h"
+#include "techniques/texel_error/shadow_edge_error.h"
 #include "techniques/texel_error/texel_footprint.h"
 #include "techniques/depth_map/triangle_bvh.h"
 
@@ -127,6 +130,23 @@ class MapReplay {
     return share >= 0.5 ? surface : -1;
   }
 
+  // Whether a texel whose centre lies within `reach` texels (along each axis) of `texels` holds
+  // surface `surface` (its index, in the order added) at a stored depth (r/q) of `depth` or
+  // more: where one does, the lookup beside it may compare lit what that surface shadows.
+  bool holds_beyond(const glm::dvec2 &texels, double reach, int surface, double depth) {
+    const int x0 = static_cast<int>(std::ceil(texels.x - 0.5 - reach));
+    const int x1 = static_cast<int>(std::floor(texels.x - 0.5 + reach));
+    const int y0 = static_cast<int>(std::ceil(texels.y - 0.5 - reach));
+    const int y1 = static_cast<int>(std::floor(texels.y - 0.5 + reach));
+    for (int j = y0; j <= y1; ++j) {
+      for (int i = x0; i <= x1; ++i) {
+        const Texel &t = stored(i, j);
+        if (t.surface == surface && t.depth >= depth) return true;
+      }
+    }
+    return false;
+  }
+
   int side() const { return side_; }
 
  private:
@@ -185,6 +205,42 @@ class MapReplay {
   std::unordered_map<long long, Texel> texels_;
 };
 
+// The map of `side` texels as step 1 draws it where `caster`'s shadow meets `receiver`: the
+// caster, and the receiver too when it casts (its own depths then decide beside the caster's).
+inline MapReplay caster_replay(const LightFrustum &frustum, const SpotLight &light, int side,
+                               const TechniqueOptions &options, const WorldMesh &caster,
+                               const WorldMesh &receiver) {
+  MapReplay replay(frustum, light, side, options);
+  replay.add(caster, frustum);
+  if (receiver.object->casts_shadow && &receiver != &caster) replay.add(receiver, frustum);
+  return replay;
+}
+
+// An estimate at the map's `side` and at 2, 4 and 8 times it: `count(map_side)` at each (screen
+// pixels), and no larger size tried where the side's own finds nothing (none to name).
+template <typename Count>
+EdgeErrorEstimate estimate_by_size(int side, Count &&count) {
+  EdgeErrorEstimate estimate;
+  for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
+    if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;
+    estimate.pixels[size] = static_cast<float>(count(side << size));
+  }
+  return estimate;
+}
+
+// The r/q a receiver triangle (corners a, b, c, world) compares lowered by in the `side`-texel
+// map whose texture coordinates `to_map` gives (world to s, t, r, q): its receiver-plane bias
+// (depth_map_lookup.h) when the receiver casts, none when it does not.
+inline double receiver_lowering(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c,
+                                bool casts, const glm::mat4 &to_map, int side,
+                                const TechniqueOptions &options) {
+  if (!casts) return 0.0;
+  const std::vector<glm::vec3> corners = {a, b, c};
+  const glm::vec4 plain = to_map * glm::vec4(a, 1.0f);
+  const glm::vec4 biased = biased_map_coords(corners, to_map, side, options.depth_bias_receiver)[0];
+  return plain.w != 0.0f ? static_cast<double>((plain.z - biased.z) / plain.w) : 0.0;
+}
+
 // An object's triangles (world) and their box, for rays along segments.
 struct RayBody {
   TriangleBvh triangles;
@@ -232,6 +288,38 @@ inline bool seen_past_near_plane(const std::vector<RayBody> &bodies, const glm::
   }
   return true;
 }
+
+// The frame's other shadowing lights than `light` (slides cast none) with their beams: the mask
+// is the union of every light's shadow, so where one of them shadows a point the frame shows it
+// in shadow whatever `light`'s map says.
+class OtherShadows {
+ public:
+  OtherShadows(const Scene &scene, const SpotLight &light) {
+    for (const SpotLight &other : scene.lights) {
+      if (&other != &light && !other.is_projector()) others_.emplace_back(&other, light_beam(other));
+    }
+  }
+
+  // Whether another light shines on `point` (world; `normal` its surface's plane's, unit) and
+  // any body of `bodies` that casts, or the receiver `receiver_at` itself, blocks it there.
+  bool hold(const std::vector<RayBody> &bodies, std::size_t receiver_at, const dvec3 &point,
+            const dvec3 &normal) const {
+    for (const auto &[other, other_beam] : others_) {
+      const dvec3 from(other->position);
+      if (!(glm::dot(normal, from - point) > 0.0) ||
+          !inside_planes(other_beam.inner, glm::vec3(point))) {
+        continue;
+      }
+      for (std::size_t m = 0; m < bodies.size(); ++m) {
+        if ((bodies[m].casts || m == receiver_at) && blocks(bodies[m], from, point - from)) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::vector<std::pair<const SpotLight *, LightBeam>> others_;
+};
 
 // Every object of `meshes` (world) as a ray body, in their order.
 inline std::vector<RayBody> ray_bodies(const std::vector<WorldMesh> &meshes) {

@@ -3,7 +3,6 @@
 // the light, counted as the error measure counts.
 #include "techniques/depth_map/depth_map_strips.h"
 
-#include "techniques/depth_map/depth_map_lookup.h"
 #include "techniques/depth_map/depth_map_replay.h"
 #include "techniques/depth_map/triangle_bvh.h"
 #include "techniques/geometry/light_beam.h"
@@ -166,24 +165,14 @@ std::vector<ContactError> strip_errors(const Scene &scene,
         }
         return false;
       };
-      EdgeErrorEstimate estimate;
-      for (int size = 0; size < EdgeErrorEstimate::kSizes; ++size) {
-        if (size > 0 && !(estimate.pixels[0] > 0.0f)) break;  // nothing to name a size for
-        const int map_side = side << size;
-        MapReplay replay(frustum, light, map_side, options);
-        replay.add(caster, frustum);
-        if (receiver.object->casts_shadow) replay.add(receiver, frustum);
+      const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
+        MapReplay replay = caster_replay(frustum, light, map_side, options, caster, receiver);
         long interior = 0;
         for (std::size_t i = 0; i < pixels.size(); ++i) {
           if (truth[i] < 0) continue;
           const strips::StripPixel &pixel = pixels[i];
-          double lowered = 0.0;  // the receiver's lowered depth (r/q) when it casts
-          if (receiver.object->casts_shadow) {
-            const std::vector<glm::vec3> corners = {pixel.corner[0], pixel.corner[1], pixel.corner[2]};
-            const glm::vec4 plain = to_map * glm::vec4(corners[0], 1.0f);
-            const glm::vec4 biased = biased_map_coords(corners, to_map, map_side, options.depth_bias_receiver)[0];
-            if (plain.w != 0.0f) lowered = static_cast<double>((plain.z - biased.z) / plain.w);
-          }
+          const double lowered = receiver_lowering(pixel.corner[0], pixel.corner[1], pixel.corner[2],
+                                                   receiver.object->casts_shadow, to_map, map_side, options);
           glm::dvec2 texels;
           double depth;
           if (!replay.in_map(pixel.point, texels, depth)) continue;
@@ -195,8 +184,8 @@ std::vector<ContactError> strip_errors(const Scene &scene,
           }
           if (!band) ++interior;
         }
-        estimate.pixels[size] = static_cast<float>(interior);
-      }
+        return static_cast<double>(interior);
+      });
       ContactError &error = result[static_cast<std::size_t>(caster.object - scene.objects.data())];
       if (estimate.pixels[0] > error.pixels.pixels[0]) {
         error.receiver = static_cast<std::size_t>(receiver.object - scene.objects.data());
