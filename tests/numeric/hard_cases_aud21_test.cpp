@@ -17,8 +17,8 @@
 
 using namespace hard_cases;  // the checks of hard_case_checks.h
 
-// Three lights: only_in_beam off (shadow_where_unlit asks light 0 alone). The shadow: more than 150
-// pixels in the truth (more than the 150 the check asks).
+// Three lights: only_in_beam off (shadow_where_unlit asks light 0 alone); the check asks the truth
+// for at least 150 shadow pixels.
 TEST(HardCases, CutFarPastTheLightsScreenIsCastAndRight) {
   const std::string file = "audit/aud21_cut_far_past_light_screen.json";
   expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, false,
