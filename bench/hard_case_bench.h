@@ -1,5 +1,5 @@
 // hard_case_sweeps' one way of measuring (hard_case_sweeps.cpp, hard_case_footprint.cpp): every
-// configuration on every frame once, without progress, a failure printed with the sweep's name;
+// configuration on every frame once, its progress and a failure on stderr with the sweep's name;
 // and a technique's configuration at its defaults.
 #pragma once
 
@@ -24,9 +24,16 @@ inline bool measure_once(const std::vector<gs::BenchFrame> &frames,
                          const std::vector<gs::BenchConfiguration> &configurations,
                          const std::string &sweep, std::vector<gs::BenchRow> &rows) {
   std::string error;
-  if (gs::run_bench(frames, configurations, 1, [](int, int, const std::string &) {}, rows, error)) {
-    return true;
-  }
+  // A line as each frame starts (its first configuration), and the last: a sweep of many scene
+  // files runs for minutes, and a scene that never finishes is named by the last line written.
+  const int per_frame = static_cast<int>(configurations.size());
+  const auto progress = [&sweep, per_frame](int done, int total, const std::string &what) {
+    if (per_frame > 0 && ((done - 1) % per_frame == 0 || done == total)) {
+      std::fprintf(stderr, "hard_case_sweeps %s: [%d/%d] %s\n", sweep.c_str(), done, total,
+                   what.c_str());
+    }
+  };
+  if (gs::run_bench(frames, configurations, 1, progress, rows, error)) return true;
   std::fprintf(stderr, "hard_case_sweeps: %s: %s\n", sweep.c_str(), error.c_str());
   return false;
 }
