@@ -35,7 +35,7 @@ int run_bench_command(std::vector<std::string> scene_files, bool quick, int repe
   FightScene fight(640, 480, 256);
   for (float time : quick ? std::vector<float>{2.1f} : std::vector<float>{0.5f, 2.1f, 5.3f}) {
     char name[32];
-    std::snprintf(name, sizeof name, "fight t=%.1f", static_cast<double>(time));
+    std::snprintf(name, sizeof name, "%s%.1f", kFightFramePrefix, static_cast<double>(time));
     frames.push_back({name, fight.at(time)});
   }
   if (scene_files.empty() && !quick && fs::is_directory("scenes")) {

@@ -24,6 +24,10 @@ struct BenchConfiguration {
   std::optional<AttenuationMode> attenuation;
 };
 
+// The name of each fight frame the bench measures starts with this ("fight t=2.1"); a scene
+// file's frame is named for its file ("fighters"), which may start with "fight" too.
+inline constexpr const char *kFightFramePrefix = "fight t=";
+
 struct BenchFrame {
   std::string name;  // "fight t=2.1", a scene file's name
   Scene scene;
