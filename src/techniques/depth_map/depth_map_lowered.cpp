@@ -158,7 +158,10 @@ std::vector<ContactError> lowered_errors(const Scene &scene, const std::vector<W
       }
     }
     const OtherShadows others(scene, light);
-    for (const auto &[caster_at, pixels] : by_caster) {
+    for (const auto &grazed : by_caster) {
+      // Named, not bound: C++17 lambdas (clang's) cannot capture structured bindings.
+      const std::size_t caster_at = grazed.first;
+      const std::vector<GrazedPixel> &pixels = grazed.second;
       const EdgeErrorEstimate estimate = estimate_by_size(side, [&](int map_side) {
         MapReplay replay = caster_replay(frustum, light, map_side, options, meshes[caster_at], receiver);
         long interior = 0;
