@@ -131,8 +131,12 @@ void gu_allocate(FuzzedDataProvider &in) {
   const GlideContext &ctx = glide_shim::current();
   if (id != GR_NULL_MIPMAP_HANDLE) {
     if (id >= ctx.gu_textures.next_id) violated("guTexAllocateMemory", "an id beyond the manager's count");
-    if (ctx.gu_textures.free_base <= free_before || ctx.gu_textures.free_base > glide_shim::kTmuMemoryBytes)
-      violated("guTexAllocateMemory", "the free pointer did not advance inside TMU memory");
+    // The driver (digutex.c) advances the free pointer by grTexTextureMemRequired of the mask's
+    // levels: 0 bytes when the mask selects none of the chain's levels (one even level, odd mask).
+    const FxU32 required = grTexTextureMemRequired(mask, &info);
+    if (ctx.gu_textures.free_base - free_before != required ||
+        ctx.gu_textures.free_base > glide_shim::kTmuMemoryBytes)
+      violated("guTexAllocateMemory", "the free pointer did not advance by the chain's size inside TMU memory");
   }
 }
 

@@ -81,4 +81,36 @@ TEST_F(FuzzFindings, ClosingTheWindowEndsPlainGl) {
   expect_no_error();
 }
 
+// glide_api_fuzz: guTexAllocateMemory of a chain whose odd/even mask selects none of its levels
+// (one level, GR_LOD_256, which is even, with the odd mask). The shim was right and the fuzzer's
+// rule wrong: like the driver (digutex.c), the allocation succeeds and takes the
+// grTexTextureMemRequired of the mask's levels, 0 bytes, so the next chain starts where it would
+// have. The rule now asks for exactly that size.
+TEST_F(FuzzFindings, AllocatingAChainWithNoLevelOfItsMaskTakesNoMemory) {
+  GrTexInfo info{};
+  info.smallLod = GR_LOD_256;
+  info.largeLod = GR_LOD_256;
+  info.aspectRatio = GR_ASPECT_1x1;
+  info.format = GR_TEXFMT_RGB_565;
+  EXPECT_EQ(grTexTextureMemRequired(GR_MIPMAPLEVELMASK_ODD, &info), 0u);
+  const FxU32 free_before = guTexMemQueryAvail(GR_TMU0);
+  glideShimClearError();
+  const GrMipMapId_t empty = guTexAllocateMemory(
+      GR_TMU0, GR_MIPMAPLEVELMASK_ODD, 256, 256, GR_TEXFMT_RGB_565, GR_MIPMAP_DISABLE, GR_LOD_256,
+      GR_LOD_256, GR_ASPECT_1x1, GR_TEXTURECLAMP_WRAP, GR_TEXTURECLAMP_WRAP,
+      GR_TEXTUREFILTER_BILINEAR, GR_TEXTUREFILTER_BILINEAR, 0.0f, FXFALSE);
+  expect_no_error();
+  ASSERT_NE(empty, GR_NULL_MIPMAP_HANDLE);
+  EXPECT_EQ(guTexMemQueryAvail(GR_TMU0), free_before);
+  // The same chain with both masks takes its whole 128 KB.
+  const GrMipMapId_t whole = guTexAllocateMemory(
+      GR_TMU0, GR_MIPMAPLEVELMASK_BOTH, 256, 256, GR_TEXFMT_RGB_565, GR_MIPMAP_DISABLE, GR_LOD_256,
+      GR_LOD_256, GR_ASPECT_1x1, GR_TEXTURECLAMP_WRAP, GR_TEXTURECLAMP_WRAP,
+      GR_TEXTUREFILTER_BILINEAR, GR_TEXTUREFILTER_BILINEAR, 0.0f, FXFALSE);
+  expect_no_error();
+  ASSERT_NE(whole, GR_NULL_MIPMAP_HANDLE);
+  EXPECT_EQ(free_before - guTexMemQueryAvail(GR_TMU0), 256u * 256u * 2u);
+  EXPECT_EQ(guTexGetMipMapInfo(whole)->tmu_base_address, guTexGetMipMapInfo(empty)->tmu_base_address);
+}
+
 }  // namespace
