@@ -120,6 +120,14 @@ def scene(seed, grazing):
             "camera": camera, "lights": [light], "objects": objects}
 
 
+def parse_screen(parser, text):
+    """--screen's WxH as (width, height) in pixels, each within the scene loader's 1 to 2048."""
+    parts = text.lower().split("x")
+    if len(parts) != 2 or not all(p.isdigit() for p in parts) or not all(1 <= int(p) <= 2048 for p in parts):
+        parser.error(f"--screen {text}: give WIDTHxHEIGHT, each 1 to 2048 pixels")
+    return int(parts[0]), int(parts[1])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--count", type=int, default=40, help="how many scenes (default 40)")
@@ -148,10 +156,14 @@ def main():
     parser.add_argument("--camera-behind", action="store_true",
                         help="option for every kind: the camera behind the receiver, looking at "
                              "its back side, or along it under the casters (scene_options.py)")
+    parser.add_argument("--screen", metavar="WxH",
+                        help="option for every kind: this screen (pixels, 1 to 2048 a side, any "
+                             "aspect) instead of the kind's own 4:3 one of 160 to 400 wide")
     parser.add_argument("--out", required=True, help="directory to write SEED.json files into")
     args = parser.parse_args()
     if args.count < 1:
         parser.error("--count must be at least 1")
+    screen = parse_screen(parser, args.screen) if args.screen else None
     os.makedirs(args.out, exist_ok=True)
     if args.classes + args.grazing + args.meshes + args.sunk + args.lights + args.near_lights > 1:
         parser.error("--classes, --grazing, --meshes, --sunk, --lights and --near-lights are "
@@ -161,7 +173,8 @@ def main():
               "lights" if args.lights else "near" if args.near_lights else "random")
     options = [name for name in scene_options.NAMES if getattr(args, name)]
     # Options name the file too (sunk-extra-lights_17200.json), beside the same seed without them.
-    prefix = "-".join([prefix] + [name.replace("_", "-") for name in options])
+    prefix = "-".join([prefix] + [name.replace("_", "-") for name in options] +
+                      ([f"screen{screen[0]}x{screen[1]}"] if screen else []))
     for seed in range(args.seed, args.seed + args.count):
         path = os.path.join(args.out, f"{prefix}_{seed:04d}.json")
         if args.near_lights:
@@ -177,6 +190,11 @@ def main():
         else:
             made = scene(seed, args.grazing)
         done = scene_options.apply(made, seed, options, on_sphere, low=args.grazing or args.sunk)
+        if screen:
+            # After the kind and the options: no random number is drawn for it, so the scene is
+            # the seed's own but for its screen (the camera's fov stays vertical, the aspect follows).
+            made["screen"] = {"width": screen[0], "height": screen[1]}
+            done.append(f"screen {screen[0]}x{screen[1]}")
         if done:
             made["description"] += " (" + ", ".join(done) + ")"
         with open(path, "w") as f:

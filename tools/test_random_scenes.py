@@ -162,6 +162,27 @@ class CommandLine(unittest.TestCase):
             with open(os.path.join(a, "sunk-extra-lights-narrow-cones_17000.json")) as f:
                 self.assertIn("(extra lights, narrow cones)", json.load(f)["description"])
 
+    def test_screen_changes_only_the_screen_and_names_the_file(self):
+        with tempfile.TemporaryDirectory() as out:
+            for extra in ([], ["--screen", "512x128"]):
+                subprocess.run([sys.executable, SCRIPT, "--sunk", "--camera-behind", "--count", "2",
+                                "--seed", "17000", "--out", out] + extra, check=True, capture_output=True)
+            for seed in (17000, 17001):
+                with open(os.path.join(out, f"sunk-camera-behind_{seed}.json")) as f:
+                    plain = json.load(f)
+                with open(os.path.join(out, f"sunk-camera-behind-screen512x128_{seed}.json")) as f:
+                    made = json.load(f)
+                self.assertEqual(made["screen"], {"width": 512, "height": 128})
+                self.assertNotEqual(plain["screen"], made["screen"])
+                self.assertTrue(made["description"].endswith(", screen 512x128)"), made["description"])
+                for key in ("camera", "lights", "objects"):
+                    self.assertEqual(plain[key], made[key], f"{seed}: {key}")
+        for bad in ("512", "0x100", "100x3000", "axb"):
+            run = subprocess.run([sys.executable, SCRIPT, "--screen", bad, "--out", "unused"],
+                                 capture_output=True, text=True)
+            self.assertNotEqual(run.returncode, 0, bad)
+            self.assertIn("--screen", run.stderr, bad)
+
 
 if __name__ == "__main__":
     unittest.main()
