@@ -14,7 +14,8 @@
 //   footprint    the projected texture's texel footprint on screen against its interior error;
 //   depth-footprint  the same for the depth map's texels, percentage-closer and nearest;
 //   files F...   any scene files (an audit on scenes the project has not seen): a row per file,
-//                every technique's interior error, or its refusal.
+//                every technique's interior error, or its refusal; files-unchecked F... the
+//                same without the coarseness estimates (what a refused cell would have served).
 // Prints one table per sweep (errors as percentages of the receiver pixels). Usage:
 //   hard_case_sweeps [classes|footprint|depth-footprint|acne|tilt|contact|translation|scale|shadow-size|screen-size]...
 //   (default: all), or hard_case_sweeps files SCENE.json...
@@ -309,7 +310,11 @@ bool acne() {
 // that many files fit), each cell the interior false shadow + false light % of the receiver pixels
 // (and the misclassified %), or "failed" with the refusal printed under the table. `*` marks a
 // success over issue 14's budget of 0.1% interior error: a silent mistake.
-bool files(const std::vector<std::string> &paths) {
+// Unchecked (`files-unchecked`): the projected techniques and the depth map with their "too
+// coarse for the screen" estimates off (footprint and edge error, infinity), so a cell the
+// defaults refuse for coarseness shows what it would have served: under 0.1%, a right frame
+// refused (the estimates' cost); over, a refusal that saved it. Other refusals stand.
+bool files(const std::vector<std::string> &paths, bool unchecked) {
   std::vector<gs::BenchFrame> frames;
   for (const std::string &path : paths) {
     gs::BenchFrame frame;
@@ -323,12 +328,19 @@ bool files(const std::vector<std::string> &paths) {
   }
   // `none` casts nothing: its misclassified share is the truth's shadow, what the scene tests.
   std::vector<gs::BenchConfiguration> configurations = every_technique();
+  if (unchecked) {
+    for (gs::BenchConfiguration &c : configurations) {
+      c.options.projected.largest_texel_footprint_px = INFINITY;
+      c.options.depth_map_largest_footprint_px = INFINITY;
+    }
+  }
   configurations.push_back(plain("none"));
   const std::size_t techniques = configurations.size() - 1;
   std::vector<gs::BenchRow> rows;
   if (!hard_cases::measure_once(frames, configurations, "files", rows)) return false;
-  std::printf("\n### Scene files, every technique at its defaults\n\ninterior error %% "
-              "(misclassified %%); * over 0.1%%\n\n| scene | shadow %% |");
+  std::printf("\n### Scene files, every technique %s\n\ninterior error %% (misclassified %%); "
+              "* over 0.1%%\n\n| scene | shadow %% |",
+              unchecked ? "without its coarseness estimates" : "at its defaults");
   for (std::size_t k = 0; k < techniques; ++k) std::printf(" %s |", configurations[k].technique.c_str());
   std::printf("\n|---|---|");
   for (std::size_t k = 0; k < techniques; ++k) std::printf("---|");
@@ -360,8 +372,9 @@ bool files(const std::vector<std::string> &paths) {
 
 int main(int argc, char **argv) {
   std::vector<std::string> sweeps(argv + 1, argv + argc);
-  if (!sweeps.empty() && sweeps[0] == "files") {
-    return files(std::vector<std::string>(sweeps.begin() + 1, sweeps.end())) ? 0 : 1;
+  if (!sweeps.empty() && (sweeps[0] == "files" || sweeps[0] == "files-unchecked")) {
+    return files(std::vector<std::string>(sweeps.begin() + 1, sweeps.end()),
+                 sweeps[0] == "files-unchecked") ? 0 : 1;
   }
   if (sweeps.size() == 1 && (sweeps[0] == "--help" || sweeps[0] == "-h")) {
     std::printf(
@@ -370,8 +383,10 @@ int main(int argc, char **argv) {
         "technique's misclassified %% of receiver pixels against the ray-cast truth, with its\n"
         "interior false shadow and false light in brackets (docs/results.md, \"Numerical hard\n"
         "cases\"). Sweeps: classes, footprint, depth-footprint, acne, tilt, contact, translation,\n"
-        "scale, shadow-size, screen-size; or `files SCENE.json...`: a row per scene file. Exit\n"
-        "status 1 when a sweep could not render, 2 for an unknown sweep.\n");
+        "scale, shadow-size, screen-size; or `files SCENE.json...`: a row per scene file\n"
+        "(`files-unchecked SCENE.json...`: the same with the projected and depth-map \"too\n"
+        "coarse\" estimates off, what a refused cell would have served). Exit status 1 when a\n"
+        "sweep could not render, 2 for an unknown sweep.\n");
     return 0;
   }
   if (sweeps.empty()) {
