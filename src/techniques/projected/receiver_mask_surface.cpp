@@ -208,6 +208,40 @@ void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Out
   draw_fan(quad);
 }
 
+// Light clip w down to which a light-facing triangle is drawn: the caster's front (`front_w`),
+// less as far as step 3's filter reaches across it. Step 3 shades the receiver from the front on,
+// and a point just beyond it reads texel centres up to kFinTexels away on the light's screen,
+// whose surface lies nearer the light: unmasked there, the texture held a caster part the
+// receiver buries (a box sunk through a plate that a light grazes at 5 degrees, a texel 27 cm
+// long on the plate: near-narrow-cones_22677, 0.143%). 1/w is affine over the triangle's plane
+// on the light's screen, so the points within kFinTexels of the front line are those whose 1/w
+// exceeds the front's by at most kFinTexels times its gradient (texels). `polygon` is the
+// triangle clipped to w >= floor_w (> 0); the result is at least floor_w. An edge-on triangle
+// covers no texel: the front as it is.
+float reach_w(const std::vector<ClipVertex> &polygon, int size, float front_w, float floor_w) {
+  glm::vec2 screen[8];  // the light's screen, texels; a triangle clipped by one plane has 4
+  float inverse_w[8];
+  const std::size_t n = std::min<std::size_t>(polygon.size(), 8);
+  for (std::size_t i = 0; i < n; ++i) {
+    const GrVertex v = to_screen(polygon[i].clip, size, size);
+    screen[i] = {v.x, v.y}, inverse_w[i] = 1.0f / polygon[i].clip.w;
+  }
+  // The fan triangle of largest area gives the gradient best conditioned.
+  float best_area = 0.0f;
+  glm::vec2 gradient(0.0f);
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const glm::vec2 e1 = screen[i] - screen[0], e2 = screen[i + 1] - screen[0];
+    const float det = e1.x * e2.y - e1.y * e2.x;
+    if (!(std::abs(det) > best_area)) continue;
+    best_area = std::abs(det);
+    const float d1 = inverse_w[i] - inverse_w[0], d2 = inverse_w[i + 1] - inverse_w[0];
+    gradient = glm::vec2(d1 * e2.y - d2 * e1.y, e1.x * d2 - e2.x * d1) / det;
+  }
+  if (!(best_area > 1e-6f)) return front_w;
+  const float reach_inverse_w = 1.0f / front_w + kFinTexels * glm::length(gradient);
+  return std::max(floor_w, std::min(front_w, 1.0f / reach_inverse_w));
+}
+
 }  // namespace
 
 float depth_oow(const LightView &view, float light_w) {
@@ -220,40 +254,53 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
   grDepthMask(FXTRUE);
   grDepthBufferFunction(farthest ? GR_CMP_GREATER : GR_CMP_LESS);
   grColorMask(FXFALSE, FXFALSE);
-  // Light clip space: beyond the caster's front (w >= caster_front), and the view's square a
-  // little wider (so the edge of the texture is covered too). Step 3 never shades the part of a
-  // receiver nearer the light than the caster's front (receiver_coords.cpp), so that part needs
-  // no protecting from the caster behind it; left in, it would hide a caster part lying between
-  // it and a farther part of the same receiver (a post behind a ridge of its floor) from that
+  // Light clip space: beyond the caster's front (w >= caster_front) and as far before it as
+  // step 3's filter reaches (reach_w), and the view's square a little wider (so the edge of the
+  // texture is covered too). Step 3 never shades the part of a receiver nearer the light than the
+  // caster's front (receiver_coords.cpp), so that part needs no protecting from the caster
+  // behind it beyond the filter's reach; left in, it would hide a caster part lying between it
+  // and a farther part of the same receiver (a post behind a ridge of its floor) from that
   // farther part, which the caster does shadow.
   const std::vector<glm::vec4> planes = {
       {0.0f, 0.0f, 0.0f, 1.0f}, {-1.0f, 0.0f, 0.0f, 1.01f}, {1.0f, 0.0f, 0.0f, 1.01f},
       {0.0f, -1.0f, 0.0f, 1.01f}, {0.0f, 1.0f, 0.0f, 1.01f}};
-  const float nearest_w = std::max(view.caster_front, 1e-3f * std::max(view.caster_front, 1e-3f));
+  const float front_w = std::max(view.caster_front, 1e-3f * std::max(view.caster_front, 1e-3f));
+  // Light clip w: no triangle is drawn nearer than this (reach_w), which keeps its depth code
+  // (depth_oow) at most 1.
+  const float floor_w = 0.5f * front_w;
   const glm::mat4 light_clip = view.projection * view.view;
   std::vector<glm::vec4> clip(receiver.world.size());
   std::vector<unsigned> outside(receiver.world.size());
   for (std::size_t i = 0; i < clip.size(); ++i) {
     const glm::vec4 &p = clip[i] = light_clip * glm::vec4(receiver.world[i], 1.0f);
     outside[i] = (p.x < -p.w) | (p.x > p.w) << 1 | (p.y < -p.w) << 2 | (p.y > p.w) << 3 |
-                 (p.w < nearest_w) << 4;
+                 (p.w < front_w) << 4 | (p.w < floor_w) << 5;
   }
+  // The near plane as w >= near: (0, 0, 0, 1) shifted by the constant.
+  const auto clip_near = [&](std::vector<ClipVertex> &polygon_in, float near, std::vector<ClipVertex> &spare) {
+    for (ClipVertex &v : polygon_in) v.clip.w -= near;
+    clip_polygon(polygon_in, planes[0], spare);
+    for (ClipVertex &v : polygon_in) v.clip.w += near;
+  };
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
   const Outline outline = outline_of(view, receiver, clip);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-    if ((outside[t.x] & outside[t.y] & outside[t.z]) != 0) continue;
+    if ((outside[t.x] & outside[t.y] & outside[t.z] & ~0x10u) != 0) continue;
     const auto number = static_cast<std::size_t>(&t - receiver.object->mesh.triangles.data());
     if (triangles && (*triangles)[number] == 0) continue;  // not in a SurfaceMask::triangles
     const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
     if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;  // faces away
     polygon.clear();
     for (unsigned i : {t.x, t.y, t.z}) polygon.push_back({clip[i], receiver.world[i], {}});
-    if ((outside[t.x] | outside[t.y] | outside[t.z]) != 0) {
-      // The near plane as w >= nearest_w: (0, 0, 0, 1) shifted by the constant.
-      for (ClipVertex &v : polygon) v.clip.w -= nearest_w;
-      clip_polygon(polygon, planes[0], scratch);
-      for (ClipVertex &v : polygon) v.clip.w += nearest_w;
+    float nearest_w = front_w;  // light clip w: this triangle's drawn part from here on
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) & 0x10) {
+      clip_near(polygon, floor_w, scratch);
+      if (polygon.size() < 3) continue;
+      nearest_w = reach_w(polygon, view.size, front_w, floor_w);
+      clip_near(polygon, nearest_w, scratch);
+    }
+    if ((outside[t.x] | outside[t.y] | outside[t.z]) & 0x0F) {
       for (std::size_t k = 1; k < planes.size() && polygon.size() >= 3; ++k) {
         clip_polygon(polygon, planes[k], scratch);
       }
