@@ -60,13 +60,22 @@ struct TextureFor {
   bool farthest;
 };
 
+// A pass of a texture split by layer: the pierced receiver's depth band in it, the triangles
+// step 3 sorts by (its `hidden`: hidden_layers' classes, or band -4's marks), and the
+// receiver's triangles whose own surface masks the texture (SurfaceMask::triangles; none: the
+// receiver's whole surface, its farthest when the TextureFor says so).
+struct LayerPass {
+  const std::vector<signed char> *bands;
+  const std::vector<std::uint8_t> *sorted_by = nullptr;
+  const std::vector<std::uint8_t> *mask_triangles = nullptr;
+};
+
 // One texture of the caster for `part` (the `index`th of split_into_textures): step 1's cover,
-// step 3, then, when a receiver shows it, step 1's drawing and step 2. `classes` (hidden_layers)
-// and `middle` (band -3, with `middle_bands`) split a hidden pass by layer. Returns whether band
-// -1 left a triangle to band -2 (ReceiverCoords::hidden_left).
+// step 3, then, when a receiver shows it, step 1's drawing and step 2, for the pass `layer`.
+// Returns whether band -1 left a triangle to band -2 (ReceiverCoords::hidden_left).
 bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &part,
-                  std::size_t index, FxU32 bytes, const std::vector<std::uint8_t> &classes,
-                  bool middle, const std::vector<signed char> &middle_bands) {
+                  std::size_t index, FxU32 bytes, const LayerPass &layer) {
+  const std::vector<std::uint8_t> *mask_triangles = layer.mask_triangles;
   ProjectedFrame &frame = attempt.frame;
   const Scene &scene = frame.scene;
   const std::size_t caster = attempt.caster;
@@ -83,7 +92,7 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
     job.view.edge_planes.push_back(plane);
   } else if (pierced) {
     mask = {&frame.geometry.objects[pierced->receiver], &pierced->caster_crossing,
-            what.farthest && !middle, middle ? &classes : nullptr};
+            what.farthest && !mask_triangles, mask_triangles};
   }
   const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
   auto step_start = Clock::now();
@@ -114,8 +123,8 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
   step_start = Clock::now();
   job.receivers = compute_receiver_coords(
       scene, frame.geometry, caster, scene.lights[attempt.light], job.view, frame.options,
-      &what.receivers, middle ? &middle_bands : &what.bands, attempt.caster_back,
-      &attempt.surfaces, classes.empty() ? nullptr : &classes, attempt.over_buried,
+      &what.receivers, layer.bands, attempt.caster_back, &attempt.surfaces, layer.sorted_by,
+      attempt.over_buried,
       &attempt.caster_plane);  // 3
   frame.finish_step(2, step_start);
   const bool hidden_left = job.receivers.hidden_left;
@@ -152,18 +161,18 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
     frame.pending = ProjectedFrame::PendingRead{id, placed};  // 2, read_pending
   }
   job.texture.id = id;
-  job.mask_farthest = masked && what.farthest && !middle;
+  job.mask_farthest = masked && what.farthest && !mask_triangles;
   if (job.view.direct_path) {
     job.draw = std::move(draw);
     if (masked) job.mask_receiver = pierced->receiver;
-    if (masked && middle) job.mask_triangles = classes;
+    if (masked && mask_triangles) job.mask_triangles = *mask_triangles;
   }
   frame.caster_jobs.push_back(std::move(job));
   return hidden_left;
 }
 
 // The caster's textures for `what`: one per texture of its view (a map above 256 is several),
-// two where a hidden pass splits by layer. Returns whether a texture's band -1 left a triangle
+// more where a pass splits by layer. Returns whether a texture's band -1 left a triangle
 // to band -2; stops at a texture TMU memory cannot hold, which it names in the frame's errors.
 bool cast_textures(CasterTry &attempt, const TextureFor &what) {
   ProjectedFrame &frame = attempt.frame;
@@ -185,9 +194,33 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
     if (what.farthest) {
       classes = hidden_layers(frame.geometry.objects[pierced->receiver], part, attempt.surfaces);
     }
-    std::vector<signed char> middle_bands;
-    if (!classes.empty()) middle_bands = what.bands, middle_bands[pierced->receiver] = -3;
-    for (int pass = 0; pass < (classes.empty() ? 1 : 2); ++pass) {
+    std::vector<signed char> layer_bands;
+    if (!classes.empty()) layer_bands = what.bands, layer_bands[pierced->receiver] = -3;
+    // Band -1's pass gives the triangles it takes in front of a hidden caster part (crossed by
+    // the caster, or over_buried) that the receiver's own surface hides in part to band -4
+    // (hidden_layers.h, hidden_marked): band -1's texture would drop the caster's part between
+    // the nearer surface and them (a cylinder through a dune crest and the dune's trough behind
+    // it, sunk-extra-lights_18418). Band -1 then leaves them as hidden (its marks without them),
+    // bands -2 and -3 skip them as marked, and band -4 takes them layer by layer, each layer's
+    // texture masked by the surface of that layer and the ones after it.
+    std::vector<std::uint8_t> marked, band_one_marks;
+    const std::vector<std::uint8_t> *all_marks = attempt.over_buried;
+    if (pierced && !pierced->planar && !what.farthest && all_marks) {
+      marked = hidden_marked(frame.geometry.objects[pierced->receiver], part, attempt.surfaces,
+                             *all_marks);
+    }
+    int marked_layers = 0;
+    if (!marked.empty()) {
+      layer_bands = what.bands, layer_bands[pierced->receiver] = -4;
+      band_one_marks = *all_marks;
+      for (std::size_t k = 0; k < marked.size(); ++k) {
+        if (marked[k] != 0) band_one_marks[k] = 0;
+        marked_layers = std::max(marked_layers, static_cast<int>(marked[k]));
+      }
+    }
+    std::vector<std::uint8_t> taken, masking;  // a band -4 pass's triangles, and its mask's
+    const int passes = !classes.empty() ? 2 : 1 + marked_layers;
+    for (int pass = 0; pass < passes; ++pass) {
       if (!frame.result.textures.can_hold(bytes)) {
         frame.result.errors.push_back(
             "TMU memory is too small: '" + frame.scene.objects[attempt.caster].name +
@@ -196,10 +229,22 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
             std::to_string(bytes) + " bytes");
         return hidden_left;
       }
-      const bool middle = pass == 1;
-      if (cast_texture(attempt, what, part, index, bytes, classes, middle, middle_bands)) {
-        hidden_left = true;
+      LayerPass layer{&what.bands};
+      if (!classes.empty()) {
+        layer = {pass == 1 ? &layer_bands : &what.bands, &classes, pass == 1 ? &classes : nullptr};
+      } else if (marked_layers > 0) {
+        attempt.over_buried = pass == 0 ? &band_one_marks : all_marks;
+        if (pass > 0) {
+          taken.assign(marked.size(), 0), masking.assign(marked.size(), 0);
+          for (std::size_t k = 0; k < marked.size(); ++k) {
+            taken[k] = marked[k] == pass, masking[k] = marked[k] >= pass;
+          }
+          layer = {&layer_bands, &taken, &masking};
+        }
       }
+      const bool left = cast_texture(attempt, what, part, index, bytes, layer);
+      attempt.over_buried = all_marks;
+      if (left) hidden_left = true;
     }
   }
   return hidden_left;

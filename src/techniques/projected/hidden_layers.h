@@ -35,4 +35,21 @@ enum HiddenLayer : std::uint8_t {
 std::vector<std::uint8_t> hidden_layers(const ProjectedObject &receiver, const LightView &view,
                                         CasterSurfacesFromLight &surfaces);
 
+// Band -1's triangles (`marks`, per triangle of `receiver`'s mesh, possibly shorter: those the
+// caster passes through, or in front of a caster part with a farther layer behind,
+// ReceiverLayers::over_buried) that face the light and that the receiver's own drawn surface
+// hides in part, as step 3 asks it for the texture of `view`. Band -1's texture (masked by the
+// receiver's nearest surface) drops the caster's part between the nearer surface and such a
+// triangle, which shadows it (a cylinder through a dune crest and the dune's trough behind it
+// from the light, sunk-extra-lights_18418): they take band -4's textures instead, one per
+// layer, peeled from the light: layer 1 the ones no other of them hides, layer 2 those no
+// other of the rest hides, and so on, each with the texture masked by the surface of its
+// layer and the layers after it (exact for it: at each of its texels that surface is the
+// triangle itself). Per triangle its layer (1 to kMarkedLayers; the last takes all that are
+// left), 0 for the rest; empty when there is none.
+inline constexpr std::uint8_t kMarkedLayers = 4;
+std::vector<std::uint8_t> hidden_marked(const ProjectedObject &receiver, const LightView &view,
+                                        CasterSurfacesFromLight &surfaces,
+                                        const std::vector<std::uint8_t> &marks);
+
 }  // namespace gs
