@@ -202,10 +202,13 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
     // the nearer surface and them (a cylinder through a dune crest and the dune's trough behind
     // it, sunk-extra-lights_18418). Band -1 then leaves them as hidden (its marks without them),
     // bands -2 and -3 skip them as marked, and band -4 takes them layer by layer, each layer's
-    // texture masked by the surface of that layer and the ones after it.
+    // texture masked by the surface of that layer and the ones after it. Only for a receiver
+    // that casts nothing: one that casts shadows the parts its own surface hides itself, which
+    // the error measure leaves out, and band -1's texture is exact where the light reaches.
     std::vector<std::uint8_t> marked, band_one_marks;
     const std::vector<std::uint8_t> *all_marks = attempt.over_buried;
-    if (pierced && !pierced->planar && !what.farthest && all_marks) {
+    if (pierced && !pierced->planar && !what.farthest && all_marks &&
+        !frame.scene.objects[pierced->receiver].casts_shadow) {
       marked = hidden_marked(frame.geometry.objects[pierced->receiver], part, attempt.surfaces,
                              *all_marks);
     }
