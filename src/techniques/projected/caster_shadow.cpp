@@ -217,6 +217,7 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
       layer_bands = what.bands, layer_bands[pierced->receiver] = -4;
       band_one_marks = *all_marks;
       for (std::size_t k = 0; k < marked.size(); ++k) {
+        if (marked[k] == kMarkedNeighbour) continue;
         if (marked[k] != 0) band_one_marks[k] = 0;
         marked_layers = std::max(marked_layers, static_cast<int>(marked[k]));
       }
@@ -240,7 +241,8 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
         if (pass > 0) {
           taken.assign(marked.size(), 0), masking.assign(marked.size(), 0);
           for (std::size_t k = 0; k < marked.size(); ++k) {
-            taken[k] = marked[k] == pass, masking[k] = marked[k] >= pass;
+            taken[k] = marked[k] == pass;
+            masking[k] = marked[k] >= pass;  // kMarkedNeighbour too
           }
           layer = {&layer_bands, &taken, &masking};
         }

@@ -54,6 +54,8 @@ std::vector<std::uint8_t> hidden_layers(const ProjectedObject &receiver, const L
   return layers;
 }
 
+constexpr int kNeighbourRings = 2;
+
 std::vector<std::uint8_t> hidden_marked(const ProjectedObject &receiver, const LightView &view,
                                         CasterSurfacesFromLight &surfaces,
                                         const std::vector<std::uint8_t> &marks) {
@@ -111,6 +113,22 @@ std::vector<std::uint8_t> hidden_marked(const ProjectedObject &receiver, const L
     left.triangles = std::move(still.triangles);
     corners = std::move(still_corners);
     numbers = std::move(still_numbers);
+  }
+  // Their neighbours (a corner shared) and theirs, light-facing and in no layer, join every
+  // layer's mask.
+  std::vector<std::uint8_t> touched(object.mesh.positions.size(), 0);
+  for (int ring = 0; ring < kNeighbourRings; ++ring) {
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      if (layers[k] == 0) continue;
+      touched[triangles[k].x] = touched[triangles[k].y] = touched[triangles[k].z] = 1;
+    }
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      const glm::uvec3 &t = triangles[k];
+      if (layers[k] != 0 || (touched[t.x] | touched[t.y] | touched[t.z]) == 0) continue;
+      const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
+      if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;  // faces away
+      layers[k] = kMarkedNeighbour;
+    }
   }
   return layers;
 }
