@@ -196,34 +196,22 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
     }
     std::vector<signed char> layer_bands;
     if (!classes.empty()) layer_bands = what.bands, layer_bands[pierced->receiver] = -3;
-    // Band -1's pass gives the triangles it takes in front of a hidden caster part (crossed by
-    // the caster, or over_buried) that the receiver's own surface hides in part to band -4
+    // Band -1's triangles in front of a hidden caster part (crossed by the caster, or
+    // over_buried) that the receiver's own surface hides in part go to band -4, layer by layer
     // (hidden_layers.h, hidden_marked): band -1's texture would drop the caster's part between
-    // the nearer surface and them (a cylinder through a dune crest and the dune's trough behind
-    // it, sunk-extra-lights_18418). Band -1 then leaves them as hidden (its marks without them),
-    // bands -2 and -3 skip them as marked, and band -4 takes them layer by layer, each layer's
-    // texture masked by the surface of that layer and the ones after it. Only for a receiver
-    // that casts nothing: one that casts shadows the parts its own surface hides itself, which
-    // the error measure leaves out, and band -1's texture is exact where the light reaches.
-    std::vector<std::uint8_t> marked, band_one_marks;
+    // the nearer surface and them (sunk-extra-lights_18418). Band -1 leaves them as hidden (its
+    // marks without them), bands -2 and -3 skip them as marked. Only for a receiver that casts
+    // nothing: one that casts shadows the parts its surface hides itself, which the error
+    // measure leaves out, and band -1's texture is exact where the light reaches.
     const std::vector<std::uint8_t> *all_marks = attempt.over_buried;
+    MarkedPasses marked;
     if (pierced && !pierced->planar && !what.farthest && all_marks &&
         !frame.scene.objects[pierced->receiver].casts_shadow) {
-      marked = hidden_marked(frame.geometry.objects[pierced->receiver], part, attempt.surfaces,
+      marked = marked_passes(frame.geometry.objects[pierced->receiver], part, attempt.surfaces,
                              *all_marks);
+      if (marked.layers > 0) layer_bands = what.bands, layer_bands[pierced->receiver] = -4;
     }
-    int marked_layers = 0;
-    if (!marked.empty()) {
-      layer_bands = what.bands, layer_bands[pierced->receiver] = -4;
-      band_one_marks = *all_marks;
-      for (std::size_t k = 0; k < marked.size(); ++k) {
-        if (marked[k] == kMarkedNeighbour) continue;
-        if (marked[k] != 0) band_one_marks[k] = 0;
-        marked_layers = std::max(marked_layers, static_cast<int>(marked[k]));
-      }
-    }
-    std::vector<std::uint8_t> taken, masking;  // a band -4 pass's triangles, and its mask's
-    const int passes = !classes.empty() ? 2 : 1 + marked_layers;
+    const int passes = !classes.empty() ? 2 : 1 + marked.layers;
     for (int pass = 0; pass < passes; ++pass) {
       if (!frame.result.textures.can_hold(bytes)) {
         frame.result.errors.push_back(
@@ -236,15 +224,11 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
       LayerPass layer{&what.bands};
       if (!classes.empty()) {
         layer = {pass == 1 ? &layer_bands : &what.bands, &classes, pass == 1 ? &classes : nullptr};
-      } else if (marked_layers > 0) {
-        attempt.over_buried = pass == 0 ? &band_one_marks : all_marks;
+      } else if (marked.layers > 0) {
+        attempt.over_buried = pass == 0 ? &marked.band_one_marks : all_marks;
         if (pass > 0) {
-          taken.assign(marked.size(), 0), masking.assign(marked.size(), 0);
-          for (std::size_t k = 0; k < marked.size(); ++k) {
-            taken[k] = marked[k] == pass;
-            masking[k] = marked[k] >= pass;  // kMarkedNeighbour too
-          }
-          layer = {&layer_bands, &taken, &masking};
+          marked.layer_pass(pass);
+          layer = {&layer_bands, &marked.taken, &marked.masking};
         }
       }
       const bool left = cast_texture(attempt, what, part, index, bytes, layer);
@@ -253,54 +237,6 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
     }
   }
   return hidden_left;
-}
-
-// The receivers the caster reaches through (pierced_receivers.h), or that hide part of it from
-// the light (receiver_layers.h): each takes a texture of its own, masked by its surface. One
-// holding a caster part between two of its layers takes it too when it casts nothing: its
-// nearer layer the texture masked by its nearest surface, the farther layer that its own surface
-// hides the one masked by its farthest (step 3's depth band -2). One that casts gets no shadow,
-// by name (a pole over a ridge of a floor that casts: 0.111% interior error served with the two
-// textures): `refused`, named in the frame's errors.
-struct ReachedReceivers {
-  std::vector<PiercedReceiver> pierced;
-  ReceiverLayers layers;
-  std::vector<std::size_t> refused;
-};
-
-ReachedReceivers reached_receivers(CasterTry &attempt) {
-  ProjectedFrame &frame = attempt.frame;
-  const Scene &scene = frame.scene;
-  const std::size_t caster = attempt.caster;
-  const auto start = Clock::now();
-  ReachedReceivers reached;
-  std::vector<PiercedReceiver> &pierced = reached.pierced;
-  pierced = pierced_receivers(scene, frame.geometry, caster, scene.lights[attempt.light].position,
-                              attempt.caster_plane);
-  reached.layers =
-      receiver_layers(scene, frame.geometry, caster, attempt.fitted, pierced, attempt.caster_plane);
-  for (std::size_t r : reached.layers.between) {
-    if (scene.objects[r].casts_shadow) reached.refused.push_back(r);
-  }
-  for (std::size_t r : reached.layers.hiding) {
-    if (std::none_of(pierced.begin(), pierced.end(),
-                     [r](const PiercedReceiver &p) { return p.receiver == r; })) {
-      PiercedReceiver masked;
-      masked.receiver = r;
-      masked.planar = false;
-      masked.casts = true;
-      masked.caster_crossing.assign(caster_mesh(scene.objects[caster]).triangles.size(), 0);
-      pierced.push_back(std::move(masked));
-    }
-  }
-  for (std::size_t r : reached.refused) {
-    frame.result.errors.push_back(receiver_layers_error(scene, attempt.light, caster, r));
-    pierced.erase(std::remove_if(pierced.begin(), pierced.end(),
-                                 [r](const PiercedReceiver &p) { return p.receiver == r; }),
-                  pierced.end());
-  }
-  frame.result.times.ms[0] += elapsed_ms(start);
-  return reached;
 }
 
 // Every texture of the caster: one for the receivers it does not reach through, and for each it
@@ -462,7 +398,12 @@ void cast_caster_shadow(ProjectedFrame &frame, std::size_t light, std::size_t ca
     CasterTry attempt{frame, light, caster, fitted, caster_plane,
                       farthest_depth(scene.objects[caster], fitted.view), {},
                       CasterSurfacesFromLight(scene.objects[caster]), nullptr};
-    cast_caster_textures(attempt, reached_receivers(attempt));  // 1, 3 and 2
+    const auto reach_start = Clock::now();
+    const ReachedReceivers reached =
+        reached_receivers(scene, frame.geometry, light, caster, fitted, caster_plane,
+                          frame.result.errors);
+    frame.result.times.ms[0] += elapsed_ms(reach_start);
+    cast_caster_textures(attempt, reached);  // 1, 3 and 2
     const ScreenCheck check = check_against_screen(frame, light, caster, fitted.size);
     if (check.reason) {
       frame.result.textures.release_from(caster_mark);  // its textures are not used

@@ -133,4 +133,28 @@ std::vector<std::uint8_t> hidden_marked(const ProjectedObject &receiver, const L
   return layers;
 }
 
+MarkedPasses marked_passes(const ProjectedObject &receiver, const LightView &view,
+                           CasterSurfacesFromLight &surfaces,
+                           const std::vector<std::uint8_t> &marks) {
+  MarkedPasses passes;
+  passes.marked = hidden_marked(receiver, view, surfaces, marks);
+  if (passes.marked.empty()) return passes;
+  passes.band_one_marks = marks;
+  for (std::size_t k = 0; k < passes.marked.size() && k < marks.size(); ++k) {
+    const std::uint8_t layer = passes.marked[k];
+    if (layer == 0 || layer == kMarkedNeighbour) continue;
+    passes.band_one_marks[k] = 0;
+    passes.layers = std::max(passes.layers, static_cast<int>(layer));
+  }
+  return passes;
+}
+
+void MarkedPasses::layer_pass(int layer) {
+  taken.assign(marked.size(), 0), masking.assign(marked.size(), 0);
+  for (std::size_t k = 0; k < marked.size(); ++k) {
+    taken[k] = marked[k] == layer;
+    masking[k] = marked[k] >= layer;  // kMarkedNeighbour's too
+  }
+}
+
 }  // namespace gs

@@ -60,4 +60,18 @@ std::vector<std::uint8_t> hidden_marked(const ProjectedObject &receiver, const L
                                         CasterSurfacesFromLight &surfaces,
                                         const std::vector<std::uint8_t> &marks);
 
+// Band -4's passes over one texture, from hidden_marked's answer for `marks`.
+struct MarkedPasses {
+  std::vector<std::uint8_t> marked;          // hidden_marked's
+  std::vector<std::uint8_t> band_one_marks;  // `marks` but the layers' triangles: band -1's
+  int layers = 0;                            // 0: no band -4
+  std::vector<std::uint8_t> taken, masking;  // set by layer_pass
+  // The triangles layer `layer` (1 to `layers`) takes, and those whose surface masks its
+  // texture (SurfaceMask::triangles): that layer's, the later ones' and kMarkedNeighbour's.
+  void layer_pass(int layer);
+};
+MarkedPasses marked_passes(const ProjectedObject &receiver, const LightView &view,
+                           CasterSurfacesFromLight &surfaces,
+                           const std::vector<std::uint8_t> &marks);
+
 }  // namespace gs
