@@ -60,13 +60,22 @@ struct TextureFor {
   bool farthest;
 };
 
+// A pass of a texture split by layer: the pierced receiver's depth band in it, the triangles
+// step 3 sorts by (its `hidden`: hidden_layers' classes, or band -4's marks), and the
+// receiver's triangles whose own surface masks the texture (SurfaceMask::triangles; none: the
+// receiver's whole surface, its farthest when the TextureFor says so).
+struct LayerPass {
+  const std::vector<signed char> *bands;
+  const std::vector<std::uint8_t> *sorted_by = nullptr;
+  const std::vector<std::uint8_t> *mask_triangles = nullptr;
+};
+
 // One texture of the caster for `part` (the `index`th of split_into_textures): step 1's cover,
-// step 3, then, when a receiver shows it, step 1's drawing and step 2. `classes` (hidden_layers)
-// and `middle` (band -3, with `middle_bands`) split a hidden pass by layer. Returns whether band
-// -1 left a triangle to band -2 (ReceiverCoords::hidden_left).
+// step 3, then, when a receiver shows it, step 1's drawing and step 2, for the pass `layer`.
+// Returns whether band -1 left a triangle to band -2 (ReceiverCoords::hidden_left).
 bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &part,
-                  std::size_t index, FxU32 bytes, const std::vector<std::uint8_t> &classes,
-                  bool middle, const std::vector<signed char> &middle_bands) {
+                  std::size_t index, FxU32 bytes, const LayerPass &layer) {
+  const std::vector<std::uint8_t> *mask_triangles = layer.mask_triangles;
   ProjectedFrame &frame = attempt.frame;
   const Scene &scene = frame.scene;
   const std::size_t caster = attempt.caster;
@@ -83,7 +92,7 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
     job.view.edge_planes.push_back(plane);
   } else if (pierced) {
     mask = {&frame.geometry.objects[pierced->receiver], &pierced->caster_crossing,
-            what.farthest && !middle, middle ? &classes : nullptr};
+            what.farthest && !mask_triangles, mask_triangles};
   }
   const SurfaceMask *masked = mask.receiver ? &mask : nullptr;
   auto step_start = Clock::now();
@@ -114,8 +123,8 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
   step_start = Clock::now();
   job.receivers = compute_receiver_coords(
       scene, frame.geometry, caster, scene.lights[attempt.light], job.view, frame.options,
-      &what.receivers, middle ? &middle_bands : &what.bands, attempt.caster_back,
-      &attempt.surfaces, classes.empty() ? nullptr : &classes, attempt.over_buried,
+      &what.receivers, layer.bands, attempt.caster_back, &attempt.surfaces, layer.sorted_by,
+      attempt.over_buried,
       &attempt.caster_plane);  // 3
   frame.finish_step(2, step_start);
   const bool hidden_left = job.receivers.hidden_left;
@@ -152,18 +161,18 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
     frame.pending = ProjectedFrame::PendingRead{id, placed};  // 2, read_pending
   }
   job.texture.id = id;
-  job.mask_farthest = masked && what.farthest && !middle;
+  job.mask_farthest = masked && what.farthest && !mask_triangles;
   if (job.view.direct_path) {
     job.draw = std::move(draw);
     if (masked) job.mask_receiver = pierced->receiver;
-    if (masked && middle) job.mask_triangles = classes;
+    if (masked && mask_triangles) job.mask_triangles = *mask_triangles;
   }
   frame.caster_jobs.push_back(std::move(job));
   return hidden_left;
 }
 
 // The caster's textures for `what`: one per texture of its view (a map above 256 is several),
-// two where a hidden pass splits by layer. Returns whether a texture's band -1 left a triangle
+// more where a pass splits by layer. Returns whether a texture's band -1 left a triangle
 // to band -2; stops at a texture TMU memory cannot hold, which it names in the frame's errors.
 bool cast_textures(CasterTry &attempt, const TextureFor &what) {
   ProjectedFrame &frame = attempt.frame;
@@ -185,9 +194,25 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
     if (what.farthest) {
       classes = hidden_layers(frame.geometry.objects[pierced->receiver], part, attempt.surfaces);
     }
-    std::vector<signed char> middle_bands;
-    if (!classes.empty()) middle_bands = what.bands, middle_bands[pierced->receiver] = -3;
-    for (int pass = 0; pass < (classes.empty() ? 1 : 2); ++pass) {
+    std::vector<signed char> layer_bands;
+    if (!classes.empty()) layer_bands = what.bands, layer_bands[pierced->receiver] = -3;
+    // Band -1's triangles in front of a hidden caster part (crossed by the caster, or
+    // over_buried) that the receiver's own surface hides in part go to band -4, layer by layer
+    // (hidden_layers.h, hidden_marked): band -1's texture would drop the caster's part between
+    // the nearer surface and them (sunk-extra-lights_18418). Band -1 leaves them as hidden (its
+    // marks without them), bands -2 and -3 skip them as marked. Only for a receiver that casts
+    // nothing: one that casts shadows the parts its surface hides itself, which the error
+    // measure leaves out, and band -1's texture is exact where the light reaches.
+    const std::vector<std::uint8_t> *all_marks = attempt.over_buried;
+    MarkedPasses marked;
+    if (pierced && !pierced->planar && !what.farthest && all_marks &&
+        !frame.scene.objects[pierced->receiver].casts_shadow) {
+      marked = marked_passes(frame.geometry.objects[pierced->receiver], part, attempt.surfaces,
+                             *all_marks);
+      if (marked.layers > 0) layer_bands = what.bands, layer_bands[pierced->receiver] = -4;
+    }
+    const int passes = !classes.empty() ? 2 : 1 + marked.layers;
+    for (int pass = 0; pass < passes; ++pass) {
       if (!frame.result.textures.can_hold(bytes)) {
         frame.result.errors.push_back(
             "TMU memory is too small: '" + frame.scene.objects[attempt.caster].name +
@@ -196,61 +221,22 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
             std::to_string(bytes) + " bytes");
         return hidden_left;
       }
-      const bool middle = pass == 1;
-      if (cast_texture(attempt, what, part, index, bytes, classes, middle, middle_bands)) {
-        hidden_left = true;
+      LayerPass layer{&what.bands};
+      if (!classes.empty()) {
+        layer = {pass == 1 ? &layer_bands : &what.bands, &classes, pass == 1 ? &classes : nullptr};
+      } else if (marked.layers > 0) {
+        attempt.over_buried = pass == 0 ? &marked.band_one_marks : all_marks;
+        if (pass > 0) {
+          marked.layer_pass(pass);
+          layer = {&layer_bands, &marked.taken, &marked.masking};
+        }
       }
+      const bool left = cast_texture(attempt, what, part, index, bytes, layer);
+      attempt.over_buried = all_marks;
+      if (left) hidden_left = true;
     }
   }
   return hidden_left;
-}
-
-// The receivers the caster reaches through (pierced_receivers.h), or that hide part of it from
-// the light (receiver_layers.h): each takes a texture of its own, masked by its surface. One
-// holding a caster part between two of its layers takes it too when it casts nothing: its
-// nearer layer the texture masked by its nearest surface, the farther layer that its own surface
-// hides the one masked by its farthest (step 3's depth band -2). One that casts gets no shadow,
-// by name (a pole over a ridge of a floor that casts: 0.111% interior error served with the two
-// textures): `refused`, named in the frame's errors.
-struct ReachedReceivers {
-  std::vector<PiercedReceiver> pierced;
-  ReceiverLayers layers;
-  std::vector<std::size_t> refused;
-};
-
-ReachedReceivers reached_receivers(CasterTry &attempt) {
-  ProjectedFrame &frame = attempt.frame;
-  const Scene &scene = frame.scene;
-  const std::size_t caster = attempt.caster;
-  const auto start = Clock::now();
-  ReachedReceivers reached;
-  std::vector<PiercedReceiver> &pierced = reached.pierced;
-  pierced = pierced_receivers(scene, frame.geometry, caster, scene.lights[attempt.light].position,
-                              attempt.caster_plane);
-  reached.layers =
-      receiver_layers(scene, frame.geometry, caster, attempt.fitted, pierced, attempt.caster_plane);
-  for (std::size_t r : reached.layers.between) {
-    if (scene.objects[r].casts_shadow) reached.refused.push_back(r);
-  }
-  for (std::size_t r : reached.layers.hiding) {
-    if (std::none_of(pierced.begin(), pierced.end(),
-                     [r](const PiercedReceiver &p) { return p.receiver == r; })) {
-      PiercedReceiver masked;
-      masked.receiver = r;
-      masked.planar = false;
-      masked.casts = true;
-      masked.caster_crossing.assign(caster_mesh(scene.objects[caster]).triangles.size(), 0);
-      pierced.push_back(std::move(masked));
-    }
-  }
-  for (std::size_t r : reached.refused) {
-    frame.result.errors.push_back(receiver_layers_error(scene, attempt.light, caster, r));
-    pierced.erase(std::remove_if(pierced.begin(), pierced.end(),
-                                 [r](const PiercedReceiver &p) { return p.receiver == r; }),
-                  pierced.end());
-  }
-  frame.result.times.ms[0] += elapsed_ms(start);
-  return reached;
 }
 
 // Every texture of the caster: one for the receivers it does not reach through, and for each it
@@ -412,7 +398,12 @@ void cast_caster_shadow(ProjectedFrame &frame, std::size_t light, std::size_t ca
     CasterTry attempt{frame, light, caster, fitted, caster_plane,
                       farthest_depth(scene.objects[caster], fitted.view), {},
                       CasterSurfacesFromLight(scene.objects[caster]), nullptr};
-    cast_caster_textures(attempt, reached_receivers(attempt));  // 1, 3 and 2
+    const auto reach_start = Clock::now();
+    const ReachedReceivers reached =
+        reached_receivers(scene, frame.geometry, light, caster, fitted, caster_plane,
+                          frame.result.errors);
+    frame.result.times.ms[0] += elapsed_ms(reach_start);
+    cast_caster_textures(attempt, reached);  // 1, 3 and 2
     const ScreenCheck check = check_against_screen(frame, light, caster, fitted.size);
     if (check.reason) {
       frame.result.textures.release_from(caster_mark);  // its textures are not used

@@ -201,7 +201,7 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
     // other negated, so both cut a receiver at the same points) and its flag 0x40 per vertex.
     const signed char band = depth_bands ? (*depth_bands)[r] : 0;
     masked_band = band != 0;
-    // -1, -2 and -3: keep -z <= back; +1: keep -z >= back
+    // -1, -2, -3 (and -4, never cut): keep -z <= back; +1: keep -z >= back
     const float side = band < 0 ? -1.0f : static_cast<float>(band);
     band_planes = view_planes;
     band_planes.push_back(glm::vec4(0.0f, 0.0f, -side, -side * caster_back));
@@ -243,7 +243,14 @@ ReceiverCoords compute_receiver_coords(const Scene &scene, const FrameGeometry &
       // the farthest layer only: with `hidden_classes` (hidden_layers.h), the hidden triangles
       // that no other hidden one hides take band -3's instead. Beyond the plane (+1) the
       // whole caster's texture, except where the receiver hides nothing: the masked one, whole.
-      if (band != 0 && (band < 0 || (any_outside & 0x40) != 0)) {
+      if (band == -4) {
+        // Band -4 (hidden_layers.h, hidden_marked): band -1's marked triangles that the
+        // receiver's own surface hides in part, whole, with the texture masked by their surface.
+        if (!hidden_classes || number >= hidden_classes->size() || (*hidden_classes)[number] == 0) {
+          continue;
+        }
+        any_outside &= ~0x40u;
+      } else if (band != 0 && (band < 0 || (any_outside & 0x40) != 0)) {
         if (!own_surface) {
           own_surface = &built.receiver_at(*receiver.object, light_clip,
                                            std::max(view.caster_front, 1e-6f));

@@ -351,4 +351,35 @@ std::string receiver_layers_error(const Scene &scene, std::size_t light, std::si
          scene.objects[receiver].name + "' from this light";
 }
 
+ReachedReceivers reached_receivers(const Scene &scene, const FrameGeometry &frame,
+                                   std::size_t light, std::size_t caster, const LightView &view,
+                                   const std::optional<glm::vec4> &caster_plane,
+                                   std::vector<std::string> &errors) {
+  ReachedReceivers reached;
+  std::vector<PiercedReceiver> &pierced = reached.pierced;
+  pierced = pierced_receivers(scene, frame, caster, scene.lights[light].position, caster_plane);
+  reached.layers = receiver_layers(scene, frame, caster, view, pierced, caster_plane);
+  for (std::size_t r : reached.layers.between) {
+    if (scene.objects[r].casts_shadow) reached.refused.push_back(r);
+  }
+  for (std::size_t r : reached.layers.hiding) {
+    if (std::none_of(pierced.begin(), pierced.end(),
+                     [r](const PiercedReceiver &p) { return p.receiver == r; })) {
+      PiercedReceiver masked;
+      masked.receiver = r;
+      masked.planar = false;
+      masked.casts = true;
+      masked.caster_crossing.assign(caster_mesh(scene.objects[caster]).triangles.size(), 0);
+      pierced.push_back(std::move(masked));
+    }
+  }
+  for (std::size_t r : reached.refused) {
+    errors.push_back(receiver_layers_error(scene, light, caster, r));
+    pierced.erase(std::remove_if(pierced.begin(), pierced.end(),
+                                 [r](const PiercedReceiver &p) { return p.receiver == r; }),
+                  pierced.end());
+  }
+  return reached;
+}
+
 }  // namespace gs
