@@ -176,7 +176,9 @@ void cover_receivers(const Scene &scene, const FrameGeometry &frame, float least
       }
       polygon.clear();
       if (inside) {
-        for (unsigned i : {t.x, t.y, t.z}) polygon.emplace_back(object.screen[i].x, object.screen[i].y);
+        polygon.resize(3);  // written in place: growing it call by call cost a call each
+        const unsigned corner[3] = {t.x, t.y, t.z};
+        for (int k = 0; k < 3; ++k) polygon[static_cast<std::size_t>(k)] = {object.screen[corner[k]].x, object.screen[corner[k]].y};
       } else {  // through the camera's near plane and guard band first
         camera_polygon = {{{}, a, {}}, {{}, b, {}}, {{}, c, {}}};
         project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
