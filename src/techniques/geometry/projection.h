@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace gs {
@@ -34,8 +35,19 @@ glm::mat4 camera_projection(const Camera &camera, int width, int height);
 GrVertex to_screen(const glm::vec4 &clip, int width, int height);
 
 // A Glide screen coordinate (pixels) as the Voodoo's 12.4 set-up and the shim use it: to the
-// nearest 1/16 pixel, halves away from zero.
-inline float snap_to_subpixel(float pixels) { return std::round(pixels * 16.0f) / 16.0f; }
+// nearest 1/16 pixel, halves away from zero: std::round(pixels * 16) / 16 to the bit (the sign
+// of a zero too), without its library call (a build without SSE4.1 has no rounding
+// instruction; the edge-error budget snaps every corner of the frame). Below 2^23 sixteenths
+// the truncation is exact in an int32 and so is the fraction left; from there on every float
+// is whole (and infinities and NaN pass through).
+inline float snap_to_subpixel(float pixels) {
+  const float sixteenths = pixels * 16.0f;
+  if (!(std::fabs(sixteenths) < 8388608.0f)) return sixteenths / 16.0f;
+  const float whole = static_cast<float>(static_cast<std::int32_t>(sixteenths));  // toward 0
+  const float fraction = sixteenths - whole;
+  const float rounded = fraction >= 0.5f ? whole + 1.0f : fraction <= -0.5f ? whole - 1.0f : whole;
+  return std::copysign(rounded, sixteenths) / 16.0f;
+}
 
 // The planes a camera-space polygon is clipped to before projection: the near plane, and a
 // guard band of `guard` screens around the view so coordinates stay well inside Glide's

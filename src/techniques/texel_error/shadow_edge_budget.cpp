@@ -17,8 +17,12 @@ namespace {
 // The screen's covered pixels as bits, a row of whole words per screen row (pixel x of row y at
 // bit x % 64 of word y * words + x / 64; Glide screen, rows in y): a span sets its words, where
 // a byte a pixel cost a fill call a span and a count over every pixel of the screen.
+// kCounting: cover() keeps the count of covered pixels as it goes (running_count), for a caller
+// that stops once enough are; else count() counts them once at the end.
+template <bool kCounting>
 class CoveredPixels {
  public:
+  static constexpr bool kCountingAsItGoes = kCounting;
   CoveredPixels(int width, int height)
       : words_(static_cast<std::size_t>(std::max(width, 0) + 63) / 64),
         bits_(words_ * static_cast<std::size_t>(std::max(height, 0)), 0) {}
@@ -29,12 +33,12 @@ class CoveredPixels {
     const std::uint64_t head = ~std::uint64_t{0} << (from % 64);
     const std::uint64_t tail = ~std::uint64_t{0} >> (63 - (to - 1) % 64);
     if (first == last) {
-      row[first] |= head & tail;
+      set(row[first], head & tail);
       return;
     }
-    row[first] |= head;
-    for (int word = first + 1; word < last; ++word) row[word] = ~std::uint64_t{0};
-    row[last] |= tail;
+    set(row[first], head);
+    for (int word = first + 1; word < last; ++word) set(row[word], ~std::uint64_t{0});
+    set(row[last], tail);
   }
   std::size_t count() const {
     std::size_t pixels = 0;
@@ -43,10 +47,16 @@ class CoveredPixels {
     }
     return pixels;
   }
+  std::size_t running_count() const { return covered_; }
 
  private:
+  void set(std::uint64_t &word, std::uint64_t bits) {
+    if (kCounting) covered_ += static_cast<std::size_t>(__builtin_popcountll(bits & ~word));
+    word |= bits;
+  }
   std::size_t words_;
   std::vector<std::uint64_t> bits_;
+  std::size_t covered_ = 0;
 };
 
 // Where side p -> q of a polygon crosses the centre line of a row (y = centre, pixels), p and q
@@ -72,7 +82,8 @@ int ceil_to_int(float pixels) {
 
 // Covers the pixels of row y whose centre has left <= x + 0.5 < right (the row's crossings of the
 // polygon's sides, pixels), within the width.
-void cover_span(int y, float left, float right, int width, CoveredPixels &covered) {
+template <class Covered>
+void cover_span(int y, float left, float right, int width, Covered &covered) {
   if (!(left < right)) return;
   const int from = std::max(ceil_to_int(left - 0.5f), 0);
   const int to = std::min(ceil_to_int(right - 0.5f), width);  // past the end
@@ -84,8 +95,9 @@ void cover_span(int y, float left, float right, int width, CoveredPixels &covere
 // shim's rasterizer draws it: on the polygon's bottom side (largest y), not its top (a floor's
 // far triangles snapped to one row's centres). A row's centre line crosses the sides p -> q
 // with p.y < centre <= q.y or q.y < centre <= p.y; its span runs between the crossings.
+template <class Covered>
 void cover_convex_polygon(const std::vector<glm::vec2> &polygon, int width, int height,
-                          CoveredPixels &covered) {
+                          Covered &covered) {
   if (polygon.size() < 3) return;
   float low = INFINITY, high = -INFINITY;
   for (const glm::vec2 &p : polygon) low = std::min(low, p.y), high = std::max(high, p.y);
@@ -128,9 +140,14 @@ void cover_convex_polygon(const std::vector<glm::vec2> &polygon, int width, int 
   }
 }
 
-}  // namespace
-
-float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
+// Covers in `drawn` the pixels receiver_screen_pixels counts, of every camera-facing triangle;
+// or, when `drawn` counts as it goes (a bound), only of those wholly before the camera and
+// within the guard band whose screen area (pixels, corners unsnapped) is at least least_area,
+// stopping once `enough` are covered: a subset of the same triangles, covered the same way, so
+// a subset of the same pixels.
+template <class Covered>
+void cover_receivers(const Scene &scene, const FrameGeometry &frame, float least_area,
+                     std::size_t enough, Covered &drawn) {
   const int width = scene.width, height = scene.height;
   const float right = static_cast<float>(width), top = static_cast<float>(height);
   // The screen's sides as half-planes (x, y, 1) . side >= 0 (Glide screen, pixels).
@@ -143,7 +160,6 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
   // 9 of 487). The pixels the snap adds beyond the exact outline (a centre within 1/32 px of
   // it) are counted too; covering the exact triangles as well to leave those out cost 8.5 M
   // instructions of the demo's shadowed frame and moved no budget of the project's scenes.
-  CoveredPixels drawn(width, height);
   std::vector<glm::vec2> polygon, clipped;
   std::vector<ClipVertex> camera_polygon, scratch;
   std::vector<GrVertex> screen;
@@ -151,9 +167,18 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
     for (const glm::uvec3 &t : object.object->mesh.triangles) {
       const glm::vec3 &a = object.world[t.x], &b = object.world[t.y], &c = object.world[t.z];
       if (glm::dot(glm::cross(b - a, c - a), scene.camera.position - a) <= 0.0f) continue;
+      const bool inside = (object.outside[t.x] | object.outside[t.y] | object.outside[t.z]) == 0;
+      if constexpr (Covered::kCountingAsItGoes) {  // a bound
+        if (!inside) continue;
+        const GrVertex &p = object.screen[t.x], &q = object.screen[t.y], &r = object.screen[t.z];
+        const float twice = (q.x - p.x) * (r.y - p.y) - (r.x - p.x) * (q.y - p.y);
+        if (!(std::fabs(twice) >= 2.0f * least_area)) continue;
+      }
       polygon.clear();
-      if ((object.outside[t.x] | object.outside[t.y] | object.outside[t.z]) == 0) {
-        for (unsigned i : {t.x, t.y, t.z}) polygon.emplace_back(object.screen[i].x, object.screen[i].y);
+      if (inside) {
+        polygon.resize(3);  // written in place: growing it call by call cost a call each
+        const unsigned corner[3] = {t.x, t.y, t.z};
+        for (int k = 0; k < 3; ++k) polygon[static_cast<std::size_t>(k)] = {object.screen[corner[k]].x, object.screen[corner[k]].y};
       } else {  // through the camera's near plane and guard band first
         camera_polygon = {{{}, a, {}}, {{}, b, {}}, {{}, c, {}}};
         project_camera_polygon(frame, scene, camera_polygon, scratch, screen);
@@ -176,9 +201,29 @@ float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
       }
       for (glm::vec2 &p : polygon) p = {snap_to_subpixel(p.x), snap_to_subpixel(p.y)};
       cover_convex_polygon(polygon, width, height, drawn);
+      if constexpr (Covered::kCountingAsItGoes) {
+        if (drawn.running_count() >= enough) return;
+      }
     }
   }
+}
+
+}  // namespace
+
+float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame) {
+  CoveredPixels<false> drawn(scene.width, scene.height);
+  cover_receivers(scene, frame, 0.0f, 0, drawn);
   return static_cast<float>(drawn.count());
+}
+
+float receiver_screen_pixels_at_least(const Scene &scene, const FrameGeometry &frame,
+                                      float least_area, float enough) {
+  CoveredPixels<true> drawn(scene.width, scene.height);
+  // Never more than the screen holds (and so a size_t whatever `enough` is: infinity, NaN).
+  const float screen = static_cast<float>(std::max(scene.width, 0)) * static_cast<float>(std::max(scene.height, 0));
+  const auto target = static_cast<std::size_t>(enough > 0.0f ? std::min(std::ceil(enough), screen) : 0.0f);
+  cover_receivers(scene, frame, least_area, target, drawn);
+  return static_cast<float>(drawn.running_count());
 }
 
 float edge_error_budget(const Scene &scene, const FrameGeometry &frame) {

@@ -48,6 +48,12 @@ inline constexpr float kEdgeErrorReceiverShare = 0.001f;
 // counted the floor behind a wall twice and made the budget up to a fifth larger than the
 // measure's 0.1% (grazing_12217: 14,205 against 12,826 pixels, issue 14).
 float receiver_screen_pixels(const Scene &scene, const FrameGeometry &frame);
+// A lower bound of it for less work: the same pixels of the triangles wholly before the camera
+// and in the guard band with a screen area of at least `least_area` pixels (> 0: the floors and
+// walls, not a figure's many small ones), in the scene's order until `enough` are covered. A
+// frame whose shadows' estimates fit 0.1% of it fits the budget.
+float receiver_screen_pixels_at_least(const Scene &scene, const FrameGeometry &frame,
+                                      float least_area, float enough);
 
 // The frame's budget for the estimate (screen pixels): 0.1% of receiver_screen_pixels, in
 // whole pixels, as a pixel centre is wrong or not. Under 1,000 pixels it is 0: any stray the
