@@ -42,15 +42,16 @@ void expect_little_interior_false_shadow(const std::string &file, const std::str
 
 }  // namespace
 
-// Light 4 alone (128 texels): both projected techniques right, and at most kFalseShadowPixels of interior false shadow.
+// Light 4 alone (128 texels): both projected techniques right, and at most kFalseShadowPixels of
+// interior false shadow.
 TEST(HardCases, FinsOnAPanelEndFaceNearerTheLightThanTheCaster) {
   const std::string file = "audit/fins20_panel_end_face_zoomed_light4.json";
   expect_projected_right(file);
   for (const std::string &name : kProjectedTechniques) expect_little_interior_false_shadow(file, name);
 }
 
-// The audit's five lights: the projected technique with at most kFalseShadowPixels of interior false shadow (29 pixels
-// before). The chroma key refuses light 1's 64-texel shadow of box0 here by name (a texel spans
+// The audit's five lights: the projected technique with at most kFalseShadowPixels of interior
+// false shadow (29 pixels before). The chroma key refuses light 1's 64-texel shadow of box0 here by name (a texel spans
 // 3.6 pixels, 3.0 accepted), so it is not asked.
 TEST(HardCases, FinsOnAPanelEndFaceNearerTheLightThanTheCasterFiveLights) {
   expect_little_interior_false_shadow("audit/fins20_panel_end_face_zoomed_audit20615.json", "projected");
