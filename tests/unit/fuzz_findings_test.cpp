@@ -93,24 +93,26 @@ TEST_F(FuzzFindings, AllocatingAChainWithNoLevelOfItsMaskTakesNoMemory) {
   info.aspectRatio = GR_ASPECT_1x1;
   info.format = GR_TEXFMT_RGB_565;
   EXPECT_EQ(grTexTextureMemRequired(GR_MIPMAPLEVELMASK_ODD, &info), 0u);
+  // guTexAllocateMemory of info's one-level chain with the odd/even mask `mask`.
+  const auto allocate = [](FxU8 mask) {
+    return guTexAllocateMemory(GR_TMU0, mask, 256, 256, GR_TEXFMT_RGB_565, GR_MIPMAP_DISABLE,
+                               GR_LOD_256, GR_LOD_256, GR_ASPECT_1x1, GR_TEXTURECLAMP_WRAP,
+                               GR_TEXTURECLAMP_WRAP, GR_TEXTUREFILTER_BILINEAR,
+                               GR_TEXTUREFILTER_BILINEAR, 0.0f, FXFALSE);
+  };
   const FxU32 free_before = guTexMemQueryAvail(GR_TMU0);
   glideShimClearError();
-  const GrMipMapId_t empty = guTexAllocateMemory(
-      GR_TMU0, GR_MIPMAPLEVELMASK_ODD, 256, 256, GR_TEXFMT_RGB_565, GR_MIPMAP_DISABLE, GR_LOD_256,
-      GR_LOD_256, GR_ASPECT_1x1, GR_TEXTURECLAMP_WRAP, GR_TEXTURECLAMP_WRAP,
-      GR_TEXTUREFILTER_BILINEAR, GR_TEXTUREFILTER_BILINEAR, 0.0f, FXFALSE);
+  const GrMipMapId_t empty = allocate(GR_MIPMAPLEVELMASK_ODD);
   expect_no_error();
   ASSERT_NE(empty, GR_NULL_MIPMAP_HANDLE);
   EXPECT_EQ(guTexMemQueryAvail(GR_TMU0), free_before);
   // The same chain with both masks takes its whole 128 KB.
-  const GrMipMapId_t whole = guTexAllocateMemory(
-      GR_TMU0, GR_MIPMAPLEVELMASK_BOTH, 256, 256, GR_TEXFMT_RGB_565, GR_MIPMAP_DISABLE, GR_LOD_256,
-      GR_LOD_256, GR_ASPECT_1x1, GR_TEXTURECLAMP_WRAP, GR_TEXTURECLAMP_WRAP,
-      GR_TEXTUREFILTER_BILINEAR, GR_TEXTUREFILTER_BILINEAR, 0.0f, FXFALSE);
+  const GrMipMapId_t whole = allocate(GR_MIPMAPLEVELMASK_BOTH);
   expect_no_error();
   ASSERT_NE(whole, GR_NULL_MIPMAP_HANDLE);
   EXPECT_EQ(free_before - guTexMemQueryAvail(GR_TMU0), 256u * 256u * 2u);
-  EXPECT_EQ(guTexGetMipMapInfo(whole)->tmu_base_address, guTexGetMipMapInfo(empty)->tmu_base_address);
+  EXPECT_EQ(guTexGetMipMapInfo(whole)->tmu_base_address,
+            guTexGetMipMapInfo(empty)->tmu_base_address);
 }
 
 }  // namespace
