@@ -3,6 +3,7 @@
 // fins along its outline from the light, and the contact strips beside the caster's cut. Light
 // view and light clip space in, the light's size x size Glide screen (texels) out.
 #include "techniques/projected/pierced_receivers.h"
+#include "techniques/projected/receiver_outline.h"
 
 #include "techniques/geometry/projection.h"
 #include "techniques/light_passes/scene_pass.h"
@@ -14,225 +15,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace gs {
 namespace {
-
-// The receiver's outline from the light: the edges of its light-facing triangles that no other
-// light-facing triangle shares (by world position), as pairs of position ids, sorted, so that a
-// lookup is a search; and those triangles' corners in the light's screen (texels), to find what
-// lies beyond an edge.
-struct Outline {
-  struct Lit {
-    glm::vec3 corner[3];  // world
-    glm::vec2 screen[3];  // light screen, texels
-    bool in_front;        // every corner before the light (else it is taken to overlap all)
-    glm::vec2 low, high;  // box of `screen`; the whole plane unless in front and within kNear
-  };
-  // Light screen texels: within this of the view, float rounding in a separating-axis test
-  // is below 1e-3 texel.
-  static constexpr float kNear = 1e4f;
-  // Per vertex of the receiver, an id equal to another vertex's exactly where their world
-  // positions compare equal (as floats: 0 and -0 alike), so an edge is a pair of ids; ids run
-  // from 0 up to id_count.
-  std::vector<std::uint32_t> position_id;
-  std::uint32_t id_count = 0;
-  // The outline's edges filed under their lower id: its higher ids at higher[start[id]] up to
-  // higher[start[id + 1]].
-  std::vector<std::uint32_t> start, higher;
-  std::vector<Lit> lit;
-  // The lit triangles filed by the kCell x kCell texel cells their boxes meet, over the grid's
-  // `columns` x `rows` cells from `origin` (light screen, texels; a box reaching past the grid
-  // is filed under the border cells it is clamped to, as the queries are): cell c's at
-  // in_cell[cell_start[c]] up to in_cell[cell_start[c + 1]]. Those boxed as the whole plane are
-  // in `everywhere`. nothing_beyond looks only at the triangles of the cells its fin's box
-  // meets, and the same tests then give the same answer. Filed at its first question (`filed`;
-  // most masks ask none): `size` is the view's.
-  static constexpr float kCell = 32.0f;
-  int size = 0;
-  mutable bool filed = false;
-  mutable glm::vec2 origin{0.0f};
-  mutable int columns = 0, rows = 0;
-  mutable std::vector<std::uint32_t> cell_start, in_cell, everywhere;
-  // Cells low..high (inclusive) of the texel box low..high, clamped to the grid.
-  void cells_of(const glm::vec2 &low, const glm::vec2 &high, glm::ivec2 &first, glm::ivec2 &last) const {
-    auto cell = [&](float v, float from, int count) {
-      return static_cast<int>(std::clamp((v - from) / kCell, 0.0f, static_cast<float>(count - 1)));
-    };
-    first = {cell(low.x, origin.x, columns), cell(low.y, origin.y, rows)};
-    last = {cell(high.x, origin.x, columns), cell(high.y, origin.y, rows)};
-  }
-  void file_lit_triangles() const {
-    filed = true;
-    // The view's square and as much again each side: the fins nothing_beyond is asked about lie
-    // within about a texel of it or are clamped to its border with what lies there.
-    origin = glm::vec2(-static_cast<float>(size));
-    columns = rows = std::max(1, static_cast<int>(std::ceil(3.0f * static_cast<float>(size) / kCell)));
-    cell_start.assign(static_cast<std::size_t>(columns * rows) + 1, 0);
-    for (int pass = 0; pass < 2; ++pass) {  // count, then file (a counting sort)
-      std::vector<std::uint32_t> next;
-      if (pass == 1) {
-        for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
-        next.assign(cell_start.begin(), cell_start.end() - 1);
-        in_cell.resize(cell_start.back());
-      }
-      for (std::uint32_t i = 0; i < lit.size(); ++i) {
-        const Lit &t = lit[i];
-        if (!(std::isfinite(t.low.x) && std::isfinite(t.low.y) && std::isfinite(t.high.x) && std::isfinite(t.high.y))) {
-          if (pass == 0) everywhere.push_back(i);
-          continue;
-        }
-        glm::ivec2 first, last;
-        cells_of(t.low, t.high, first, last);
-        for (int y = first.y; y <= last.y; ++y)
-          for (int x = first.x; x <= last.x; ++x) {
-            const auto c = static_cast<std::size_t>(y * columns + x);
-            if (pass == 0) ++cell_start[c + 1]; else in_cell[next[c]++] = i;
-          }
-      }
-    }
-  }
-  std::uint64_t key(unsigned p, unsigned q) const {
-    const std::uint64_t a = position_id[p], b = position_id[q];
-    return a < b ? a << 32 | b : b << 32 | a;
-  }
-  // Whether the edge between vertices p and q of the receiver lies on the outline.
-  bool contains(unsigned p, unsigned q) const {
-    const std::uint64_t edge = key(p, q);
-    const auto first = higher.begin() + start[edge >> 32], last = higher.begin() + start[(edge >> 32) + 1];
-    return std::find(first, last, static_cast<std::uint32_t>(edge)) != last;
-  }
-  // Whether no light-facing triangle of the receiver but those with a corner at p or q (its
-  // neighbours along the outline) overlaps the convex quad `fin` (texels; separating axes).
-  bool nothing_beyond(const glm::vec3 &p, const glm::vec3 &q, const glm::vec2 (&fin)[4]) const {
-    auto separated = [](const glm::vec2 *a, int na, const glm::vec2 *b, int nb) {
-      for (int i = 0; i < na; ++i) {
-        const glm::vec2 side = a[(i + 1) % na] - a[i];
-        const glm::vec2 axis(side.y, -side.x);
-        float a_low = INFINITY, a_high = -INFINITY, b_low = INFINITY, b_high = -INFINITY;
-        for (int k = 0; k < na; ++k) a_low = std::min(a_low, glm::dot(axis, a[k])), a_high = std::max(a_high, glm::dot(axis, a[k]));
-        for (int k = 0; k < nb; ++k) b_low = std::min(b_low, glm::dot(axis, b[k])), b_high = std::max(b_high, glm::dot(axis, b[k]));
-        if (a_high <= b_low || b_high <= a_low) return true;
-      }
-      return false;
-    };
-    glm::vec2 low(INFINITY), high(-INFINITY);
-    for (const glm::vec2 &corner : fin) low = glm::min(low, corner), high = glm::max(high, corner);
-    auto beyond = [&](const Lit &t) {
-      // Boxes more than a texel apart: the fin (a rectangle, whose right angles put one of the
-      // two polygons' edge normals within 45 degrees of the direction between their nearest
-      // points) and the triangle are separated by more than 0.7 texel along that normal, which
-      // `separated` finds whatever the rounding; skipped before the tests below, as they would.
-      if (t.high.x + 1.0f < low.x || high.x + 1.0f < t.low.x || t.high.y + 1.0f < low.y ||
-          high.y + 1.0f < t.low.y) {
-        return false;
-      }
-      bool neighbour = false;
-      for (const glm::vec3 &corner : t.corner) neighbour = neighbour || corner == p || corner == q;
-      if (neighbour) return false;
-      if (!t.in_front) return true;
-      return !separated(fin, 4, t.screen, 3) && !separated(t.screen, 3, fin, 4);
-    };
-    if (!filed) file_lit_triangles();
-    for (const std::uint32_t i : everywhere)
-      if (beyond(lit[i])) return false;
-    // A triangle the box test keeps has its box within a texel of the fin's: within two, for
-    // the rounding of the sums, lie the cells to look in. A NaN corner looks everywhere.
-    glm::ivec2 first(0), last(columns - 1, rows - 1);
-    if (std::isfinite(low.x) && std::isfinite(low.y) && std::isfinite(high.x) && std::isfinite(high.y)) {
-      cells_of(low - 2.0f, high + 2.0f, first, last);
-    }
-    for (int y = first.y; y <= last.y; ++y)
-      for (int x = first.x; x <= last.x; ++x) {
-        const auto c = static_cast<std::size_t>(y * columns + x);
-        for (std::uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k)
-          if (beyond(lit[in_cell[k]])) return false;
-      }
-    return true;
-  }
-};
-
-// Per position of `world` (world space), an id shared exactly by the positions that compare
-// equal to it as floats (0 and -0 alike, infinities too; a NaN joins none), counted up in order
-// of first appearance; `count` is the number of ids. Through a hash table of the positions' bits.
-std::vector<std::uint32_t> world_position_ids(const std::vector<glm::vec3> &world,
-                                              std::uint32_t &count) {
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 2 * world.size()) ++bits;
-  constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
-  std::vector<std::uint32_t> slot(std::size_t{1} << bits, kEmpty);  // a vertex with the position
-  std::vector<std::uint32_t> id(world.size());
-  count = 0;
-  for (std::uint32_t i = 0; i < world.size(); ++i) {
-    const glm::vec3 p = world[i] + glm::vec3(0.0f);  // -0 as 0, so equal positions hash alike
-    std::uint32_t x, y, z;
-    std::memcpy(&x, &p.x, 4), std::memcpy(&y, &p.y, 4), std::memcpy(&z, &p.z, 4);
-    const std::uint64_t hash =
-        ((std::uint64_t{x} << 32 | y) * 0x9E3779B97F4A7C15u) ^ (std::uint64_t{z} * 0xC2B2AE3D27D4EB4Fu);
-    for (std::size_t s = hash >> (64 - bits);; s = (s + 1) & ((std::size_t{1} << bits) - 1)) {
-      if (slot[s] == kEmpty) {
-        slot[s] = i;
-        id[i] = count++;
-        break;
-      }
-      if (world[slot[s]] == world[i]) {
-        id[i] = id[slot[s]];
-        break;
-      }
-    }
-  }
-  return id;
-}
-
-Outline outline_of(const LightView &view, const ProjectedObject &receiver,
-                   const std::vector<glm::vec4> &clip) {
-  Outline outline;
-  outline.position_id = world_position_ids(receiver.world, outline.id_count);
-  std::vector<std::uint64_t> all;
-  for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
-    const glm::vec3 &a = receiver.world[t.x], &b = receiver.world[t.y], &c = receiver.world[t.z];
-    if (glm::dot(glm::cross(b - a, c - a), view.position - a) <= 0.0f) continue;
-    all.push_back(outline.key(t.x, t.y));
-    all.push_back(outline.key(t.y, t.z));
-    all.push_back(outline.key(t.z, t.x));
-    Outline::Lit lit{{a, b, c}, {}, true, glm::vec2(INFINITY), glm::vec2(-INFINITY)};
-    bool near = true;
-    int k = 0;
-    for (unsigned i : {t.x, t.y, t.z}) {
-      lit.in_front = lit.in_front && clip[i].w > 0.0f;
-      const GrVertex v = to_screen(clip[i], view.size, view.size);
-      lit.screen[k] = glm::vec2(v.x, v.y);
-      near = near && std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear;
-      lit.low = glm::min(lit.low, lit.screen[k]), lit.high = glm::max(lit.high, lit.screen[k]);
-      ++k;
-    }
-    if (!lit.in_front || !near) lit.low = glm::vec2(-INFINITY), lit.high = glm::vec2(INFINITY);
-    outline.lit.push_back(lit);
-  }
-  outline.size = view.size;
-  // The edges filed under their lower id (a counting sort), each id's few then sorted: an edge
-  // on the outline is one found once.
-  std::vector<std::uint32_t> start(outline.id_count + 1, 0), higher(all.size());
-  for (const std::uint64_t edge : all) ++start[(edge >> 32) + 1];
-  for (std::uint32_t id = 0; id < outline.id_count; ++id) start[id + 1] += start[id];
-  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-  for (const std::uint64_t edge : all) higher[next[edge >> 32]++] = static_cast<std::uint32_t>(edge);
-  outline.start.assign(outline.id_count + 1, 0);
-  for (std::uint32_t id = 0; id < outline.id_count; ++id) {
-    const auto first = higher.begin() + start[id], last = higher.begin() + start[id + 1];
-    std::sort(first, last);
-    for (auto i = first; i != last;) {
-      auto j = i + 1;
-      while (j != last && *j == *i) ++j;
-      if (j == i + 1) outline.higher.push_back(*i);
-      i = j;
-    }
-    outline.start[id + 1] = static_cast<std::uint32_t>(outline.higher.size());
-  }
-  return outline;
-}
 
 // A strip kFinTexels wide (the light's screen, texels) outside the edge p..q of a triangle whose
 // third corner is r, and as far beyond both ends, at the edge's own depth (1/W of its ends): a
@@ -247,7 +33,8 @@ Outline outline_of(const LightView &view, const ProjectedObject &receiver,
 // outline, or nothing, as no caster there: alpha 0 over many pixels.
 constexpr float kFinTexels = 1.5f;
 constexpr float kFinInwardTexels = 0.125f;  // the light's screen, texels
-void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r, const Outline &outline,
+void draw_fin(const GrVertex &p, const GrVertex &q, const GrVertex &r,
+              const ReceiverOutline &outline,
               const glm::vec3 &p_world, const glm::vec3 &q_world, bool farthest) {
   const glm::vec2 a(p.x, p.y), b(q.x, q.y), third(r.x, r.y);
   const float length = glm::length(b - a);
@@ -351,7 +138,7 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
   };
   std::vector<ClipVertex> polygon, scratch;
   std::vector<GrVertex> fan;
-  const Outline outline = outline_of(view, receiver, clip);
+  const ReceiverOutline outline = outline_of(view, receiver, clip);
   for (const glm::uvec3 &t : receiver.object->mesh.triangles) {
     if ((outside[t.x] & outside[t.y] & outside[t.z] & ~0x10u) != 0) continue;
     const auto number = static_cast<std::size_t>(&t - receiver.object->mesh.triangles.data());
@@ -393,8 +180,8 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     // inside it (a box hovering over a ring's mat, issue 14). For a triangle reaching out of the
     // view's square, from its three corners unclipped (light screen, texels; the shim clips the
     // fin to the screen) when all lie beyond the caster's front (light clip w, so 1/W is
-    // positive and finite) and within Outline::kNear texels (where nothing_beyond's separating
-    // axes keep their precision): a long side of a cylinder grazed by the light and leaving the
+    // positive and finite) and within ReceiverOutline::kNear texels (where nothing_beyond's
+    // separating axes keep their precision): a long side of a cylinder grazed by the light and leaving the
     // view had no fin, and the mat beyond its outline shadowed its lit edge
     // (sunk-camera-behind_18439, 0.156%). A triangle reaching nearer the light than the
     // caster's front has its outline edges clipped there (light clip w >= nearest_w), with the
@@ -402,7 +189,7 @@ void draw_mask_surface(const LightView &view, const ProjectedObject &receiver, b
     // the light (light clip w) with the caster's front at 5.5 m, had no fin, and the caster
     // behind its outline shadowed it (near-extra-lights_20615, 0.131%).
     const auto far_off = [](const GrVertex &v) {
-      return !(std::abs(v.x) < Outline::kNear && std::abs(v.y) < Outline::kNear);
+      return !(std::abs(v.x) < ReceiverOutline::kNear && std::abs(v.y) < ReceiverOutline::kNear);
     };
     const glm::vec3 *corner[3] = {&a, &b, &c};
     const unsigned index[3] = {t.x, t.y, t.z};
