@@ -69,6 +69,8 @@ struct LayerPass {
   const std::vector<signed char> *bands;
   const std::vector<std::uint8_t> *sorted_by = nullptr;
   const std::vector<std::uint8_t> *mask_triangles = nullptr;
+  // Band -1's triangles in front of a hidden caster part (compute_receiver_coords' over_buried).
+  const std::vector<std::uint8_t> *over_buried = nullptr;
 };
 
 // One texture of the caster for `part` (the `index`th of split_into_textures): step 1's cover,
@@ -125,8 +127,7 @@ bool cast_texture(CasterTry &attempt, const TextureFor &what, const LightView &p
   job.receivers = compute_receiver_coords(
       scene, frame.geometry, caster, scene.lights[attempt.light], job.view, frame.options,
       &what.receivers, layer.bands, attempt.caster_back, &attempt.surfaces, layer.sorted_by,
-      attempt.over_buried,
-      &attempt.caster_plane);  // 3
+      layer.over_buried, &attempt.caster_plane);  // 3
   frame.finish_step(2, step_start);
   const bool hidden_left = job.receivers.hidden_left;
   if (job.receivers.clipped.empty() && job.receivers.footprints.empty() &&
@@ -222,19 +223,17 @@ bool cast_textures(CasterTry &attempt, const TextureFor &what) {
             std::to_string(bytes) + " bytes");
         return hidden_left;
       }
-      LayerPass layer{&what.bands};
+      LayerPass layer{&what.bands, nullptr, nullptr, all_marks};
       if (!classes.empty()) {
-        layer = {pass == 1 ? &layer_bands : &what.bands, &classes, pass == 1 ? &classes : nullptr};
+        layer = {pass == 1 ? &layer_bands : &what.bands, &classes, pass == 1 ? &classes : nullptr,
+                 all_marks};
+      } else if (marked.layers > 0 && pass == 0) {
+        layer.over_buried = &marked.band_one_marks;
       } else if (marked.layers > 0) {
-        attempt.over_buried = pass == 0 ? &marked.band_one_marks : all_marks;
-        if (pass > 0) {
-          marked.layer_pass(pass);
-          layer = {&layer_bands, &marked.taken, &marked.masking};
-        }
+        marked.layer_pass(pass);
+        layer = {&layer_bands, &marked.taken, &marked.masking, all_marks};
       }
-      const bool left = cast_texture(attempt, what, part, index, bytes, layer);
-      attempt.over_buried = all_marks;
-      if (left) hidden_left = true;
+      if (cast_texture(attempt, what, part, index, bytes, layer)) hidden_left = true;
     }
   }
   return hidden_left;
