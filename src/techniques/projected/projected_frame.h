@@ -34,7 +34,7 @@ struct ProjectedFrame {
   std::optional<float> largest_edge_error;
   bool edge_error_asked = false;  // a shadow has had an estimate (or lost centres)
   // A lower bound of largest_edge_error (screen pixels), enough to accept the shadows so far
-  // (caster_shadow.cpp, check_against_screen).
+  // (screen_check.h).
   std::optional<float> edge_error_at_least;
   float edge_error_taken = 0.0f;  // by the shadows cast so far
   // Every shadow's so far, cast or refused, at each doubling of its size: a refusal names a
