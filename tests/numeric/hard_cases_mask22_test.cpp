@@ -26,13 +26,13 @@ constexpr long kLeastShadow = 50;
 // The audit's scene: three lights, so only_in_beam off (shadow_where_unlit asks light 0 alone).
 TEST(HardCases, PlateGrazedPastTheCastersFrontIsMaskedThere) {
   const std::string file = "audit/aud22_plate_grazed_box_sunk.json";
-  expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, false, Leeway{kLeastShadow});
+  expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, false, Leeway{kLeastShadow, {}});
 }
 
 // Light 2 alone, with the plate and box1: served right, at 64 texels and at 32.
 TEST(HardCases, PlateGrazedPastTheCastersFrontAloneIsMaskedThere) {
   for (const std::string file : {"audit/aud22_plate_grazed_box_sunk_alone.json",
                                  "audit/aud22_plate_grazed_box_sunk_32_texels.json"}) {
-    expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, true, Leeway{kLeastShadow});
+    expect_these_right_or_refused(file, load(file), kProjectedTechniques, {}, true, Leeway{kLeastShadow, {}});
   }
 }
