@@ -173,20 +173,21 @@ int usage_error(const char *message, const char *argument) {
 
 int main(int argc, char **argv) {
   int repeats = 9, sdk_rounds = 20;
-  std::string only, path = "shim";
+  std::string only, path = "shim", timed_row;
   int profile_frames = 10;
   bool fidelity = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--help") == 0) {
       std::printf(
-          "usage: shim_bench [--repeats N] [--sdk-rounds N]\n"
+          "usage: shim_bench [--repeats N] [--sdk-rounds N] [--row gouraud|textured|blended]\n"
           "       shim_bench --only gouraud|textured|blended|stream [--path shim|gl] [--frames N]\n"
           "       shim_bench --fidelity [--frames N]\n"
           "Prints, each against the same work in plain GL in the same run (ratio of medians after\n"
           "warm-up, the two interleaved): the SDK-style frames (640x480 clear + two Gouraud\n"
           "W-buffer triangles + swap; the same with a bilinear 256x256 565 texture; 50 small\n"
           "textured alpha-blended triangles), 100,000 small Gouraud-textured triangles, and the\n"
-          "time of a 256x256 LFB read plus ARGB_4444 download. --only draws N frames of one row's\n"
+          "time of a 256x256 LFB read plus ARGB_4444 download (--row: one SDK row alone, timed\n"
+          "as above). --only draws N frames of one row's\n"
           "one path, untimed (for callgrind with LP_NUM_THREADS=0). --fidelity renders each row with\n"
           "each fidelity knob of GLIDESHIM_PLAIN_GL and prints its error against the exact frame.\n"
           "GLIDESHIM_EXACT=1 forces the shim's fast paths off.\n");
@@ -205,6 +206,11 @@ int main(int argc, char **argv) {
     } else if (std::strcmp(argv[i], "--path") == 0 && has_value) {
       path = argv[++i];
       if (path != "shim" && path != "gl") return usage_error("unknown path", path.c_str());
+    } else if (std::strcmp(argv[i], "--row") == 0 && has_value) {
+      timed_row = argv[++i];
+      if (timed_row != "gouraud" && timed_row != "textured" && timed_row != "blended") {
+        return usage_error("unknown SDK row", timed_row.c_str());
+      }
     } else if (std::strcmp(argv[i], "--fidelity") == 0) {
       fidelity = true;
     } else if (std::strcmp(argv[i], "--frames") == 0 && has_value) {
@@ -282,6 +288,7 @@ int main(int argc, char **argv) {
                            "clear + 50 textured blended tris"};
   for (int k = 0; k < 3; ++k) {
     const shim_workloads::Workload w = workloads[k];
+    if (!timed_row.empty() && timed_row != shim_workloads::name(w)) continue;
     shim_workloads::set_up(w, sdk_texels);
     const auto [shim_ms, gl_ms] = interleaved(
         10, sdk_rounds, 10,
@@ -293,6 +300,10 @@ int main(int argc, char **argv) {
     std::printf("    %-36s shim %6.3f ms  plain GL %6.3f ms  ratio %5.2f  (target <= %.2f)\n",
                 labels[k], shim_ms, gl_ms, shim_ms / gl_ms, targets[k]);
     std::fflush(stdout);
+  }
+  if (!timed_row.empty()) {  // --row: that SDK row alone
+    grGlideShutdown();
+    return 0;
   }
   grAlphaBlendFunction(GR_BLEND_ONE, GR_BLEND_ZERO, GR_BLEND_ONE, GR_BLEND_ZERO);
   guAlphaSource(GR_ALPHASOURCE_CC_ALPHA);

@@ -8,6 +8,7 @@
 // origins (the fast dither's row source). A fast path that changed one byte would not be a
 // fast path but a fidelity knob, off by default (docs/environment.md).
 #include "context.h"
+#include "gl/gl_renderer.h"
 #include "figures/figures.h"
 #include "gl/shader_source.h"
 #include "image_compare.h"
@@ -239,6 +240,55 @@ TEST(ClippedClears, FastPathsGiveTheExactBytes) {
     EXPECT_EQ(red, 256u * 256u) << what;
     EXPECT_EQ(green, 30u * 395u) << what;
     EXPECT_EQ(white, 0u) << what;
+    expect_same(fast, exact, what);
+  }
+}
+
+// grBufferClear of the whole screen, whose colour the fast paths copy on llvmpipe once it is
+// cleared whole twice in a row or the side buffer already holds it (clipped_clear.cpp): a colour
+// repeated, changed, back again, with a new depth, colour alone, and after a clipped clear of the
+// same colour; a triangle and a swap each frame, both buffers compared.
+TEST(WholeClears, FastPathsGiveTheExactBytes) {
+  const GrColor_t colors[8] = {0x302010, 0x302010, 0x302010, 0xA0C0E0,
+                               0x302010, 0x302010, 0xA0C0E0, 0xA0C0E0};
+  std::uint64_t copied = 0;
+  bool llvmpipe = false;
+  auto draw = [&] {
+    grDepthBufferMode(GR_DEPTHBUFFER_WBUFFER);
+    guColorCombineFunction(GR_COLORCOMBINE_ITRGB);
+    for (int frame = 0; frame < 8; ++frame) {
+      grDepthMask(frame == 5 ? FXFALSE : FXTRUE);  // frame 5: colour only
+      if (frame == 6) {
+        grClipWindow(100, 100, 200, 150);
+        grBufferClear(colors[frame], 0, GR_WDEPTHVALUE_FARTHEST);
+        grClipWindow(0, 0, 640, 480);
+      }
+      grBufferClear(colors[frame], 0, frame == 2 ? 0x1234 : GR_WDEPTHVALUE_FARTHEST);
+      const float x = 40.0f * static_cast<float>(frame);
+      GrVertex a{}, b{}, c{};
+      a.x = 20 + x, a.y = 30, b.x = 300 + x, b.y = 60, c.x = 90 + x, c.y = 400;
+      a.oow = b.oow = c.oow = 0.5f;
+      a.r = 250, b.g = 200, c.b = 150;
+      grDrawTriangle(&a, &b, &c);
+      grBufferSwap(0);
+    }
+    glide_shim::GlRenderer &renderer = *glide_shim::current().renderer;
+    copied = renderer.colors_copied();
+    using GetString = const GLubyte *(*)(GLenum);
+    auto get_string = reinterpret_cast<GetString>(renderer.proc_address("glGetString"));
+    const char *name = reinterpret_cast<const char *>(get_string(GL_RENDERER));
+    llvmpipe = name != nullptr && std::string(name).find("llvmpipe") != std::string::npos;
+  };
+  for (GrBuffer_t buffer : {GR_BUFFER_FRONTBUFFER, GR_BUFFER_BACKBUFFER}) {
+    const std::string what = buffer == GR_BUFFER_FRONTBUFFER ? "front buffer" : "back buffer";
+    const Buffers exact = render(true, buffer, draw);
+    EXPECT_EQ(copied, 0u) << "GLIDESHIM_EXACT=1 clears through GL";
+    const Buffers fast = render(false, buffer, draw);
+    // Frames 1, 2, 4, 5, 7 and both clears of frame 6; the first of each colour is a glClear.
+    if (llvmpipe) {
+      EXPECT_EQ(copied, 7u) << what << ": colour clears copied";
+    }
+    expect_drawn(exact, what);
     expect_same(fast, exact, what);
   }
 }

@@ -1,8 +1,15 @@
-// A clear of part of the target (grBufferClear inside a clip window smaller than the buffer, as
-// on the Voodoo only the clip window is filled): Mesa turns a scissored glClear into a quad drawn
-// through a fragment program, about 33 instructions a pixel on llvmpipe with a depth clear. On the
-// fast paths the region is copied instead (glCopyImageSubData, a row-by-row memcpy on llvmpipe)
-// from a side buffer that holds the clear values: the same words, for a fraction of the work.
+// Clears by copy, on the fast paths: the region is copied (glCopyImageSubData, a row-by-row
+// memcpy on llvmpipe) from a side buffer that holds the clear values, the same words for less
+// work than GL's clear where that is measured to cost more:
+// - a clear of part of the target (grBufferClear inside a clip window smaller than the buffer, as
+//   on the Voodoo only the clip window is filled): Mesa turns a scissored glClear into a quad
+//   drawn through a fragment program, about 33 instructions a pixel on llvmpipe with a depth
+//   clear. Colour and depth are copied.
+// - the colour of a clear of the whole target, on llvmpipe only: it fills a 16-bit colour buffer
+//   one pixel at a time (util_fill_rect's scalar loop for 2-byte pixels), 28% of the CPU time of
+//   shim_bench's SDK Gouraud frame (perf, LP_NUM_THREADS=0), where the depth and stencil fill is
+//   a 32-bit `rep stos` (10%) that glClear keeps. Only for a colour cleared whole twice in a row,
+//   so a colour that changes every frame costs one glClear, not a refill plus a copy.
 #include "gl/gl_renderer.h"
 #include "gl/gl_renderer_internal.h"
 
@@ -28,31 +35,45 @@ bool has_copy_image(const char *version, const char *extensions) {
 
 using namespace gl_internal;
 
-bool GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask) {
+bool GlRenderer::load_copy_image() {
+  if (copy_image_ != nullptr) return true;
+  if (copy_image_checked_) return false;
+  copy_image_checked_ = true;
+  using GetString = const GLubyte *(*)(GLenum);
+  auto get_string = reinterpret_cast<GetString>(backend_->proc_address("glGetString"));
+  if (get_string == nullptr ||
+      !has_copy_image(reinterpret_cast<const char *>(get_string(GL_VERSION)),
+                      reinterpret_cast<const char *>(get_string(GL_EXTENSIONS)))) {
+    return false;
+  }
+  const char *renderer = reinterpret_cast<const char *>(get_string(GL_RENDERER));
+  copy_beats_color_fill_ = renderer != nullptr && std::strstr(renderer, "llvmpipe") != nullptr;
+  copy_image_ = reinterpret_cast<decltype(copy_image_)>(backend_->proc_address("glCopyImageSubData"));
+  return copy_image_ != nullptr;
+}
+
+unsigned GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask) {
   const ClipRect &clip = context_.raster.clip;
   const int w = static_cast<int>(clip.max_x - clip.min_x), h = static_cast<int>(clip.max_y - clip.min_y);
-  if (!context_.fast_paths || (w == target_.width && h == target_.height)) return false;
-  // Depth and stencil share their words: the copy writes both, so only where clear() may
-  // clear the stencil too (its fast path).
-  if ((mask & GL_DEPTH_BUFFER_BIT) != 0 && (mask & GL_STENCIL_BUFFER_BIT) == 0) return false;
-  const GlFunctions &gl = backend_->gl;
-  if (copy_image_ == nullptr) {
-    if (copy_image_checked_) return false;
-    copy_image_checked_ = true;
-    using GetString = const GLubyte *(*)(GLenum);
-    auto get_string = reinterpret_cast<GetString>(backend_->proc_address("glGetString"));
-    if (get_string == nullptr ||
-        !has_copy_image(reinterpret_cast<const char *>(get_string(GL_VERSION)),
-                        reinterpret_cast<const char *>(get_string(GL_EXTENSIONS)))) {
-      return false;
-    }
-    copy_image_ = reinterpret_cast<decltype(copy_image_)>(backend_->proc_address("glCopyImageSubData"));
-    if (copy_image_ == nullptr) return false;
-  }
-  if (w <= 0 || h <= 0) return true;  // an empty clip window clears nothing
-
-  const bool color = (mask & GL_COLOR_BUFFER_BIT) != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) != 0;
+  if (!context_.fast_paths) return mask;
   ClearSource &source = clear_source_;
+  bool color = (mask & GL_COLOR_BUFFER_BIT) != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) != 0;
+  if (w == target_.width && h == target_.height) {  // the whole target: its colour only
+    const bool repeated = source.whole_asked && source.whole_rgb565 == rgb565;
+    source.whole_asked = color;
+    source.whole_rgb565 = rgb565;
+    const bool held = source.filled && source.rgb565 == rgb565 && source.width >= w && source.height >= h;
+    if (!color || !(repeated || held) || !load_copy_image() || !copy_beats_color_fill_) return mask;
+    depth = false;
+  } else {
+    // Depth and stencil share their words: the copy writes both, so only where clear() may
+    // clear the stencil too (its fast path).
+    if (depth && (mask & GL_STENCIL_BUFFER_BIT) == 0) return mask;
+    if (!load_copy_image()) return mask;
+    if (w <= 0 || h <= 0) return 0;  // an empty clip window clears nothing
+  }
+
+  const GlFunctions &gl = backend_->gl;
   if (w > source.width || h > source.height) {  // grown to the largest region asked for
     if (source.framebuffer == 0) {
       gl.glGenFramebuffers(1, &source.framebuffer);
@@ -99,12 +120,14 @@ bool GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned m
     const unsigned into = frame_buffer ? color_buffers_[buffer_index(context_.raster.render_buffer)]
                                        : texture_color_;
     copy_image_(source.color, GL_RENDERBUFFER, 0, 0, 0, 0, into, GL_RENDERBUFFER, 0, x, y, 0, w, h, 1);
+    ++colors_copied_;
   }
   if (depth) {
     const unsigned into = frame_buffer ? depth_buffer_ : texture_depth_;
     copy_image_(source.depth, GL_RENDERBUFFER, 0, 0, 0, 0, into, GL_RENDERBUFFER, 0, x, y, 0, w, h, 1);
   }
-  return true;
+  return mask & ~static_cast<unsigned>((color ? GL_COLOR_BUFFER_BIT : 0) |
+                                       (depth ? GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : 0));
 }
 
 }  // namespace glide_shim

@@ -168,7 +168,8 @@ void GlRenderer::clear(std::uint16_t rgb565, bool color, double gl_depth, bool d
       mask |= GL_STENCIL_BUFFER_BIT;
     }
   }
-  if (mask != 0 && !clear_by_copy(rgb565, gl_depth, mask)) gl.glClear(mask);
+  if (mask != 0) mask = clear_by_copy(rgb565, gl_depth, mask);
+  if (mask != 0) gl.glClear(mask);
 }
 
 void GlRenderer::read_color(int index, int x, int y, int w, int h, std::uint16_t *dst,

@@ -120,6 +120,8 @@ class GlRenderer {
   // pass each, which gives the counts one primitive at a time would.
   void flush_disjoint();
   std::uint32_t pixels_counted() const { return pixels_counted_; }
+  // Colour clears done by copy from the side buffer (clipped_clear.cpp), for the tests.
+  std::uint64_t colors_copied() const { return colors_copied_; }
 
  private:
   GlRenderer(GlideContext &context, std::unique_ptr<Backend> backend, int width, int height);
@@ -140,9 +142,12 @@ class GlRenderer {
   // one primitive at a time when `depth_writes`. Returns the pixels drawn when `query` is set.
   std::uint32_t draw_tested(unsigned mode, int first, int count, bool query, bool depth_writes);
   unsigned bias_mark_program();  // writes a constant depth and no colour; 0 on failure
-  // clear()'s work for a clip window smaller than the target (clipped_clear.cpp): copies the
-  // region from clear_source_ when the fast paths and glCopyImageSubData allow; false if not done.
-  bool clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask);
+  // clear()'s work by copy (clipped_clear.cpp): on the fast paths, copies the region from
+  // clear_source_ where glCopyImageSubData costs less than GL's clear (a clip window smaller
+  // than the target; the whole target's colour on llvmpipe). Returns the bits of the GL clear
+  // `mask` it left for glClear.
+  unsigned clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask);
+  bool load_copy_image();  // copy_image_, loaded once; false if the GL has none
   void draw_counting_stages(const ShaderProgram *program, const PipelineKey &key, unsigned mode);
 
   struct Target {
@@ -184,10 +189,15 @@ class GlRenderer {
     bool filled = false;
     std::uint16_t rgb565 = 0;
     double gl_depth = 0.0;
+    // The colour of the last clear of the whole target, if it cleared colour.
+    bool whole_asked = false;
+    std::uint16_t whole_rgb565 = 0;
   };
   ClearSource clear_source_;
-  decltype(&::glCopyImageSubData) copy_image_ = nullptr;  // loaded on the first clipped clear
+  decltype(&::glCopyImageSubData) copy_image_ = nullptr;  // loaded on the first clear by copy
   bool copy_image_checked_ = false;
+  bool copy_beats_color_fill_ = false;  // the renderer is llvmpipe (clipped_clear.cpp)
+  std::uint64_t colors_copied_ = 0;
   // No plain GL code (glideShimBeginGL) has drawn into the frame buffer yet, so its stencil
   // holds nothing but zeros (see clear()).
   bool stencil_untouched_ = true;
