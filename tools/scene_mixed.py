@@ -1,0 +1,136 @@
+"""The --mixed-lights and --camera-near-edge options of random_scenes.py (scene_options.py applies
+them, each with its own random generator, after the older options).
+
+  mixed_lights      two to four more lights, each of a different type (TYPES): lights of every
+                    type in one frame, where the other kinds have one type per scene at most;
+  camera_near_edge  the camera a few centimetres to a metre from a point of a shadow edge on the
+                    receiver, so one texel's error covers many pixels.
+The receiver is the scene's first object; an OBJ receiver's surface is taken as the horizontal
+plane through its position. World space in metres, y up.
+"""
+import math
+
+import scene_geometry as g
+import scene_lights
+import scene_options
+
+TYPES = ["slide", "exact", "in_plane", "narrow", "wide", "tiny_map", "faint"]
+
+
+def surface(scene):
+    """The receiver's height (world y) above a point (x, z) of the xz plane."""
+    receiver = scene["objects"][0]
+    return lambda x, z: g.surface_height(receiver, x, z)
+
+
+def normal(scene):
+    receiver = scene["objects"][0]
+    return g.receiver_normal(receiver) if receiver["mesh"].get("shape") in ("plane", "box") else [0, 1, 0]
+
+
+def in_plane_light(r, scene):
+    """0.05 to 3 degrees above the receiver's plane, 2 to 15 m from a point near its middle."""
+    n, height = normal(scene), surface(scene)
+    x, z = r.uniform(-1, 1), r.uniform(-1, 1)
+    centre = [x, height(x, z), z]
+    along = g.unit(g.cross(n, [0, 0, 1] if abs(n[2]) < 0.9 else [1, 0, 0]))
+    across = g.cross(n, along)
+    a, e = r.uniform(0, 2 * math.pi), math.radians(r.uniform(0.05, 3))
+    flat = g.add(g.mul(along, math.cos(a)), g.mul(across, math.sin(a)))
+    position = g.add(centre, g.mul(g.add(g.mul(flat, math.cos(e)), g.mul(n, math.sin(e))), r.uniform(2, 15)))
+    return {"position": g.r3(position), "target": g.r3(centre), "cone_degrees": round(r.uniform(20, 150), 1),
+            "shadow_size": r.choice([32, 64, 128, 256, 512])}
+
+
+def light_of(kind, r, scene, on_sphere):
+    ground = scene_options.ground_height(scene)
+    lights = scene["lights"]
+    exact_taken = any(l.get("attenuation", {}).get("mode") == "exact" for l in lights)
+    if kind == "slide":
+        return {"position": on_sphere(r, ground, (30, 80), (3, 8)),
+                "target": g.r3([r.uniform(-1, 1), ground, r.uniform(-1, 1)]),
+                "cone_degrees": round(r.uniform(30, 70), 1), "slide": r.choice(scene_lights.SLIDES)}
+    if kind == "in_plane":
+        return in_plane_light(r, scene)
+    light = scene_lights.spotlight(r, ground, on_sphere, False)
+    if kind == "exact" and not exact_taken:
+        light["beam"] = r.choice(scene_lights.BEAMS)
+        light["attenuation"] = {"mode": "exact", "constant": 1, "linear": round(r.uniform(0, 0.3), 3),
+                                "quadratic": round(r.uniform(0, 0.05), 3)}
+    elif kind == "narrow":
+        casters = scene_options.caster_points(scene)
+        if casters:
+            scene_options.aim_across(r, light, r.choice(casters), ground)
+    elif kind == "wide":
+        light["position"] = on_sphere(r, ground, (40, 90), (1, 3))
+        light["cone_degrees"] = round(r.uniform(160, 179), 1)
+    elif kind == "tiny_map":
+        light["shadow_size"] = 32
+    elif kind == "faint":
+        light["shadow_strength"] = round(r.uniform(0.05, 0.3), 2)
+        light["color"] = g.r3([r.uniform(0.2, 1) for _ in range(3)])
+    return light
+
+
+def mixed_lights(scene, r, on_sphere):
+    kinds = r.sample(TYPES, r.randint(2, 4))
+    added = []
+    for kind in kinds:
+        if len(scene["lights"]) >= 16:
+            break
+        scene["lights"].append(light_of(kind, r, scene, on_sphere))
+        added.append(kind.replace("_", " "))
+    return "mixed lights: " + ", ".join(added)
+
+
+def first_hit(start, direction, height, reach, step=0.01):
+    """Where the ray from `start` along the unit `direction` first goes from above the surface
+    `height` (world) to below it, or None within `reach` metres (a surface taken as unbounded
+    may lie above a light beside a tilted plate)."""
+    t, above = 0.0, False
+    while t < reach:
+        p = g.add(start, g.mul(direction, t))
+        if p[1] > height(p[0], p[2]):
+            above = True
+        elif above:
+            return p
+        t += step
+    return None
+
+
+def camera_near_edge(scene, r):
+    lights = scene_options.shadow_lights(scene)
+    casters = scene_options.caster_points(scene)
+    if not lights or not casters:
+        return None
+    light, points = r.choice(lights), r.choice(casters)
+    centre = g.mul([sum(p[k] for p in points) for k in range(3)], 1.0 / len(points))
+    axis = g.sub(centre, light["position"])
+    if g.dot(axis, axis) < 1e-6:
+        return None
+    axis = g.unit(axis)
+    # The caster's outermost point across the light's view, in a random direction: its shadow's edge.
+    side = g.cross(axis, g.unit([r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)]))
+    outer = max(points, key=lambda p: g.dot(g.sub(p, centre), side))
+    height = surface(scene)
+    ray = g.sub(outer, light["position"])
+    # From the light: a sunk caster's outermost point may lie under the surface, and then the
+    # edge is where the ray goes into the receiver, before it.
+    hit = first_hit(light["position"], g.unit(ray), height, math.sqrt(g.dot(ray, ray)) + 40) if g.dot(ray, ray) > 1e-9 else None
+    if hit is None:
+        hit = [outer[0], height(outer[0], outer[2]), outer[2]]
+    n = normal(scene)
+    a = r.uniform(0, 2 * math.pi)
+    flat = g.unit(g.cross(n, [math.cos(a), 0, math.sin(a)]))
+    distance, lift = r.uniform(0.05, 1.0), r.uniform(0.02, 0.5)
+    camera = scene["camera"]
+    camera["position"] = g.r3(g.add(hit, g.add(g.mul(flat, distance), g.mul(n, lift))))
+    camera["target"] = g.r3(hit)
+    view = g.unit(g.sub(camera["target"], camera["position"]))
+    if abs(view[1]) > 0.95:
+        camera["up"] = [1, 0, 0]
+    else:
+        camera.pop("up", None)
+    camera["near"] = r.choice([0.01, 0.02])
+    camera["fov_degrees"] = round(r.uniform(30, 80))
+    return f"camera {distance:.2f} m from a shadow edge"
