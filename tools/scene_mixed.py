@@ -98,27 +98,46 @@ def first_hit(start, direction, height, reach, step=0.01):
     return None
 
 
+def in_cone(light, point):
+    """Whether a world point lies within 0.9 of the spotlight's half cone (so it is lit)."""
+    a, d = g.sub(light["target"], light["position"]), g.sub(point, light["position"])
+    cos = g.dot(a, d) / math.sqrt(g.dot(a, a) * g.dot(d, d))
+    return math.degrees(math.acos(max(-1.0, min(1.0, cos)))) < 0.45 * light["cone_degrees"]
+
+
+def edge_point(scene, r, light, points):
+    """Where the ray from the light past the caster's outermost point across its view, in a
+    random direction, meets the receiver: a point of that caster's shadow edge (world)."""
+    centre = g.mul([sum(p[k] for p in points) for k in range(3)], 1.0 / len(points))
+    axis = g.sub(centre, light["position"])
+    if g.dot(axis, axis) < 1e-6:
+        return None
+    side = g.cross(g.unit(axis), [r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)])
+    outer = max(points, key=lambda p: g.dot(g.sub(p, centre), side))
+    ray = g.sub(outer, light["position"])
+    if g.dot(ray, ray) < 1e-9:
+        return None
+    # From the light: a sunk caster's outermost point may lie under the surface, and then the
+    # edge is where the ray goes into the receiver, before it.
+    return first_hit(light["position"], g.unit(ray), surface(scene), math.sqrt(g.dot(ray, ray)) + 40)
+
+
 def camera_near_edge(scene, r):
     lights = scene_options.shadow_lights(scene)
     casters = scene_options.caster_points(scene)
     if not lights or not casters:
         return None
-    light, points = r.choice(lights), r.choice(casters)
-    centre = g.mul([sum(p[k] for p in points) for k in range(3)], 1.0 / len(points))
-    axis = g.sub(centre, light["position"])
-    if g.dot(axis, axis) < 1e-6:
-        return None
-    axis = g.unit(axis)
-    # The caster's outermost point across the light's view, in a random direction: its shadow's edge.
-    side = g.cross(axis, g.unit([r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)]))
-    outer = max(points, key=lambda p: g.dot(g.sub(p, centre), side))
-    height = surface(scene)
-    ray = g.sub(outer, light["position"])
-    # From the light: a sunk caster's outermost point may lie under the surface, and then the
-    # edge is where the ray goes into the receiver, before it.
-    hit = first_hit(light["position"], g.unit(ray), height, math.sqrt(g.dot(ray, ray)) + 40) if g.dot(ray, ray) > 1e-9 else None
+    # Up to 30 tries for an edge point the light reaches (in its cone); else the last one found.
+    hit = None
+    for _ in range(30):
+        light = r.choice(lights)
+        found = edge_point(scene, r, light, r.choice(casters))
+        if found is not None:
+            hit = found
+            if in_cone(light, found):
+                break
     if hit is None:
-        hit = [outer[0], height(outer[0], outer[2]), outer[2]]
+        return None
     n = normal(scene)
     a = r.uniform(0, 2 * math.pi)
     flat = g.unit(g.cross(n, [math.cos(a), 0, math.sin(a)]))
