@@ -105,21 +105,41 @@ def in_cone(light, point):
     return math.degrees(math.acos(max(-1.0, min(1.0, cos)))) < 0.45 * light["cone_degrees"]
 
 
-def edge_point(scene, r, light, points):
-    """Where the ray from the light past the caster's outermost point across its view, in a
-    random direction, meets the receiver: a point of that caster's shadow edge (world)."""
+def on_receiver(scene, point):
+    """Whether a world point lies over the receiver's extent (a plane's, the dunes' or a plate's
+    square, the ring's mat; an OBJ mesh's is not known, so always), in its model frame."""
+    receiver = scene["objects"][0]
+    mesh = receiver["mesh"]
+    local = g.sub(point, receiver.get("position", [0, 0, 0]))
+    ax, ay, az = receiver.get("rotation_degrees", [0, 0, 0])
+    local = g.rotate(g.rotate(g.rotate(local, [0, 0, -az]), [0, -ay, 0]), [-ax, 0, 0])
+    shape = mesh.get("shape")
+    if shape in ("plane", "heightfield"):
+        half = [mesh.get("size", 10) / 2] * 2
+    elif shape == "box":
+        half = [mesh["size"][0] / 2, mesh["size"][2] / 2]
+    elif shape == "ring":
+        half = [3.0, 3.0]
+    else:
+        return True
+    return abs(local[0]) <= half[0] and abs(local[2]) <= half[1]
+
+
+def edge_point(scene, r, light, points, toward):
+    """Where the ray from the light past the caster's outermost point across its view, in the
+    direction `toward` (world), meets the receiver: a point of that caster's shadow edge."""
     centre = g.mul([sum(p[k] for p in points) for k in range(3)], 1.0 / len(points))
     axis = g.sub(centre, light["position"])
     if g.dot(axis, axis) < 1e-6:
         return None
-    side = g.cross(g.unit(axis), [r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)])
+    side = g.cross(g.cross(g.unit(axis), toward), g.unit(axis))  # toward, across the view
     outer = max(points, key=lambda p: g.dot(g.sub(p, centre), side))
     ray = g.sub(outer, light["position"])
     if g.dot(ray, ray) < 1e-9:
         return None
     # From the light: a sunk caster's outermost point may lie under the surface, and then the
     # edge is where the ray goes into the receiver, before it.
-    return first_hit(light["position"], g.unit(ray), surface(scene), math.sqrt(g.dot(ray, ray)) + 40)
+    return first_hit(light["position"], g.unit(ray), surface(scene), math.sqrt(g.dot(ray, ray)) + 15)
 
 
 def camera_near_edge(scene, r):
@@ -127,14 +147,20 @@ def camera_near_edge(scene, r):
     casters = scene_options.caster_points(scene)
     if not lights or not casters:
         return None
-    # Up to 30 tries for an edge point the light reaches (in its cone); else the last one found.
+    # Up to 60 tries for an edge point on the receiver that the light reaches (in its cone); else
+    # the last one found. Half the tries look for the caster's edge towards the beam's axis.
     hit = None
-    for _ in range(30):
+    for k in range(60):
         light = r.choice(lights)
-        found = edge_point(scene, r, light, r.choice(casters))
+        points = r.choice(casters)
+        toward = [r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)]
+        if k % 2:
+            centre = g.mul([sum(p[i] for p in points) for i in range(3)], 1.0 / len(points))
+            toward = g.sub(light["target"], centre)
+        found = edge_point(scene, r, light, points, toward)
         if found is not None:
             hit = found
-            if in_cone(light, found):
+            if in_cone(light, found) and on_receiver(scene, found):
                 break
     if hit is None:
         return None

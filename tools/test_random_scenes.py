@@ -206,15 +206,16 @@ class MixedOptions(unittest.TestCase):
                 continue
             moved += 1
             eye, target = made["camera"]["position"], made["camera"]["target"]
-            lit += any(scene_mixed.in_cone(light, target) for light in scene_options.shadow_lights(made))
+            lit += (any(scene_mixed.in_cone(light, target) for light in scene_options.shadow_lights(made)) and
+                    scene_mixed.on_receiver(made, target))
             gap = math.sqrt(g.dot(g.sub(eye, target), g.sub(eye, target)))
             self.assertTrue(0.02 < gap < 1.13, f"{kind} {seed}: {gap:.3f} m")
             on = g.surface_height(made["objects"][0], target[0], target[2])
             self.assertLess(abs(target[1] - on), 0.02, f"{kind} {seed}: {target} over {on:.3f}")
             self.assertLessEqual(made["camera"]["near"], 0.02)
-        # Most seeds find an edge point, and most of those within a light's cone.
+        # Most seeds find an edge point, and most of those on the receiver within a light's cone.
         self.assertGreater(moved, 0.8 * 60, moved)
-        self.assertGreater(lit, 0.8 * moved, (lit, moved))
+        self.assertGreater(lit, 0.75 * moved, (lit, moved))
 
 
 class CommandLine(unittest.TestCase):
