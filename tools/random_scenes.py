@@ -14,10 +14,14 @@ With --lights, one to three spotlights of every beam shape, cone and attenuation
 slide projector, over the same receivers and casters (scene_lights.py). With --near-lights, a
 spotlight stands 0.2 to 2.5 m behind a large caster (a wall, a crate, a sphere, a roof slab, a
 mesh or a tilted panel, 3 to 8 m wide) over a floor often narrower than it, dunes, the ring or a
-tilted plate (scene_near.py). Options for every kind (scene_options.py; the same seed without
+tilted plate (scene_near.py). With --receivers, the receiver is thin or far from flat (terraces,
+sagging ropes, steep dunes, a crumpled sheet, plates stacked and pierced by poles) or lit from
+0.05 to 3 degrees above its plane (scene_receivers.py). Options for every kind (scene_options.py; the same seed without
 them writes the same file as before they existed): --extra-lights adds one to three spotlights
 and beam maps, --narrow-cones aims cones of 2 to 12 degrees obliquely across the longest
-caster, --camera-behind puts the camera behind the receiver or along it, under the casters.
+caster, --camera-behind puts the camera behind the receiver or along it, under the casters,
+--mixed-lights adds lights of two to four different types, --camera-near-edge puts the camera
+a few centimetres from a shadow edge (scene_mixed.py).
 Run them through every technique against the ray-cast truth with
 
     tools/random_scenes.py --count 60 --seed 100 --grazing --out /tmp/audit
@@ -38,6 +42,7 @@ import scene_lights
 import scene_meshes
 import scene_near
 import scene_options
+import scene_receivers
 import scene_sunk
 
 
@@ -147,6 +152,10 @@ def main():
     parser.add_argument("--near-lights", action="store_true",
                         help="a spotlight close behind a large caster of every shape, over a floor "
                              "narrower than it, dunes, the ring or a tilted plate (scene_near.py)")
+    parser.add_argument("--receivers", action="store_true",
+                        help="receivers thin or far from flat (terraces, ropes, steep dunes, a "
+                             "crumpled sheet, stacked pierced plates) or lit from nearly in their "
+                             "plane (scene_receivers.py)")
     parser.add_argument("--extra-lights", action="store_true",
                         help="option for every kind: one to three more spotlights, and beam maps on "
                              "the scene's own, as --lights has them (scene_options.py)")
@@ -156,6 +165,13 @@ def main():
     parser.add_argument("--camera-behind", action="store_true",
                         help="option for every kind: the camera behind the receiver, looking at "
                              "its back side, or along it under the casters (scene_options.py)")
+    parser.add_argument("--mixed-lights", action="store_true",
+                        help="option for every kind: two to four more lights of different types "
+                             "(slide, exact attenuation, in the receiver's plane, narrow, wide, "
+                             "32 texels, faint; scene_mixed.py)")
+    parser.add_argument("--camera-near-edge", action="store_true",
+                        help="option for every kind: the camera 5 cm to 1 m from a point of a "
+                             "shadow edge on the receiver (scene_mixed.py)")
     parser.add_argument("--screen", metavar="WxH",
                         help="option for every kind: this screen (pixels, 1 to 2048 a side, any "
                              "aspect) instead of the kind's own 4:3 one of 160 to 400 wide")
@@ -165,12 +181,13 @@ def main():
         parser.error("--count must be at least 1")
     screen = parse_screen(parser, args.screen) if args.screen else None
     os.makedirs(args.out, exist_ok=True)
-    if args.classes + args.grazing + args.meshes + args.sunk + args.lights + args.near_lights > 1:
-        parser.error("--classes, --grazing, --meshes, --sunk, --lights and --near-lights are "
-                     "separate kinds of scene; give one")
+    if args.classes + args.grazing + args.meshes + args.sunk + args.lights + args.near_lights + args.receivers > 1:
+        parser.error("--classes, --grazing, --meshes, --sunk, --lights, --near-lights and "
+                     "--receivers are separate kinds of scene; give one")
     prefix = ("classes" if args.classes else "grazing" if args.grazing else
               "meshes" if args.meshes else "sunk" if args.sunk else
-              "lights" if args.lights else "near" if args.near_lights else "random")
+              "lights" if args.lights else "near" if args.near_lights else
+              "receivers" if args.receivers else "random")
     options = [name for name in scene_options.NAMES if getattr(args, name)]
     # Options name the file too (sunk-extra-lights_17200.json), beside the same seed without them.
     prefix = "-".join([prefix] + [name.replace("_", "-") for name in options] +
@@ -185,6 +202,8 @@ def main():
             made = scene_meshes.scene(seed, args.out, random.Random(seed))
         elif args.sunk:
             made = scene_sunk.scene(seed, random.Random(seed))
+        elif args.receivers:
+            made = scene_receivers.scene(seed, random.Random(seed), args.out)
         elif args.lights:
             made = scene_lights.scene(seed, random.Random(seed), receiver, caster, on_sphere)
         else:

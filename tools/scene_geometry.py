@@ -121,10 +121,13 @@ def receiver_normal(obj):
 
 def surface_height(obj, x, z):
     """The receiver's surface height (world y, metres) above the point (x, z): a plane or box
-    plate through its position (turned), the dunes' height function, the ring's mat at 1 m."""
+    plate through its position (turned), the dunes' height function, the ring's mat at 1 m; an
+    OBJ mesh's is taken as the horizontal plane through its position."""
     mesh = obj["mesh"]
     shape = mesh.get("shape")
     position = obj.get("position", [0, 0, 0])
+    if "obj" in mesh:
+        return position[1]
     if shape == "heightfield":
         a, l = mesh.get("amplitude", 0.2), mesh.get("wavelength", 4)
         return position[1] + a * math.sin(2 * math.pi * x / l) * math.cos(2 * math.pi * z / l)

@@ -12,7 +12,14 @@ existed, and with an option the same receiver and casters as without it:
                  stops);
   camera_behind  the camera behind the receiver, looking at its back side from 5 cm to 4 m
                  away, or a few centimetres above it, looking along it through the gaps under
-                 the casters.
+                 the casters;
+  mixed_lights   two to four more lights, each of another type: a slide projector, a beam with
+                 exact attenuation, a light 0.05 to 3 degrees above the receiver's plane, a 2 to
+                 12 degree cone across a caster, a 160 to 179 degree cone close over the
+                 casters, a 32-texel shadow map, a faint coloured shadow;
+  camera_near_edge  the camera 5 cm to 1 m from a point of a caster's shadow edge on the
+                 receiver (the ray from a light through the caster's outermost point across it),
+                 2 to 50 cm over the surface, its near plane at 1 to 2 cm.
 The receiver is the scene's first object (every kind of scene puts it first), the casters the
 other objects that cast. World space in metres, y up.
 """
@@ -21,8 +28,10 @@ import random
 
 import scene_geometry as g
 import scene_lights
+import scene_mixed
 
-NAMES = ["extra_lights", "narrow_cones", "camera_behind"]
+# New options go at the end: the order names the files and applies them.
+NAMES = ["extra_lights", "narrow_cones", "camera_behind", "mixed_lights", "camera_near_edge"]
 
 
 def generator(seed, name):
@@ -169,8 +178,12 @@ def apply(scene, seed, names, on_sphere, low):
             did = extra_lights(scene, r, on_sphere, low)
         elif name == "narrow_cones":
             did = narrow_cones(scene, r)
-        else:
+        elif name == "camera_behind":
             did = camera_behind(scene, r)
+        elif name == "mixed_lights":
+            did = scene_mixed.mixed_lights(scene, r, on_sphere)
+        else:
+            did = scene_mixed.camera_near_edge(scene, r)
         if did:
             done.append(did)
     return done

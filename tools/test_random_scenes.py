@@ -7,7 +7,9 @@ Each test builds scenes as random_scenes.py does and asserts the property the ki
 promises: the options change only the lights, the camera and the description (so an old seed's
 receiver and casters are the same with them), a near light lies outside its caster and within
 2.5 m of it along the direction it was placed in, a narrow cone's axis crosses a caster, a camera
-behind the receiver is on its back side. World space in metres, y up.
+behind the receiver is on its back side, --receivers' OBJ receivers are whole meshes and its
+in-plane lights lie 0.05 to 3 degrees above the plane, mixed lights are of different types, a
+camera near an edge is within a metre of its target on the receiver. World space in metres, y up.
 """
 import copy
 import json
@@ -23,7 +25,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import random_scenes  # noqa: E402
 import scene_geometry as g  # noqa: E402
 import scene_near  # noqa: E402
+import scene_mixed  # noqa: E402
 import scene_options  # noqa: E402
+import scene_receivers  # noqa: E402
 
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "random_scenes.py")
 SEEDS = range(17000, 17048)
@@ -143,6 +147,75 @@ class Options(unittest.TestCase):
                 lift = eye[1] - surface
                 self.assertTrue(0.015 < lift < 0.41 + thick + 2 * amplitude, f"{kind} {seed}: {lift:.3f} m up")
         self.assertEqual(kinds, {"camera behind the receiver", "camera along the receiver"})
+
+
+def obj_faces(path):
+    """(vertex count, faces as 1-based index lists) of an OBJ file."""
+    vertices, faces = 0, []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("v "):
+                vertices += 1
+            elif line.startswith("f "):
+                faces.append([int(word) for word in line.split()[1:]])
+    return vertices, faces
+
+
+class Receivers(unittest.TestCase):
+    def test_every_kind_in_six_seeds_and_whole_meshes(self):
+        with tempfile.TemporaryDirectory() as out:
+            kinds = set()
+            for seed in range(23000, 23012):
+                made = scene_receivers.scene(seed, random.Random(seed), out)
+                kinds.add(made["description"].split(": ")[1])
+                for obj in made["objects"]:
+                    if "obj" not in obj["mesh"]:
+                        continue
+                    count, faces = obj_faces(os.path.join(out, obj["mesh"]["obj"]))
+                    self.assertGreater(len(faces), 0, f"{seed} {obj['name']}")
+                    for face in faces:
+                        self.assertEqual(len(face), 3)
+                        self.assertTrue(all(1 <= i <= count for i in face), f"{seed} {obj['name']}: {face}")
+        self.assertEqual(kinds, set(scene_receivers.KINDS))
+
+    def test_in_plane_lights_are_nearly_in_the_receivers_plane(self):
+        with tempfile.TemporaryDirectory() as out:
+            for seed in range(23003, 23003 + 6 * 12, 6):
+                made = scene_receivers.scene(seed, random.Random(seed), out)
+                normal = scene_mixed.normal(made)
+                for light in made["lights"]:
+                    offset = g.unit(g.sub(light["position"], light["target"]))
+                    # The target lies on the receiver: the angle above its plane, rounded to mm.
+                    degrees = math.degrees(math.asin(g.dot(offset, normal)))
+                    self.assertTrue(-0.1 < degrees < 3.1, f"{seed}: {degrees:.2f} degrees")
+
+
+class MixedOptions(unittest.TestCase):
+    def test_mixed_lights_adds_two_to_four_and_one_exact_at_most(self):
+        for kind, seed, plain, made, done in Options().each("mixed_lights"):
+            added = len(made["lights"]) - len(plain["lights"])
+            self.assertTrue(2 <= added <= 4, f"{kind} {seed}: {added}")
+            self.assertEqual(len(done[0].split(": ")[1].split(", ")), added, done)
+            self.assertLessEqual(sum(l.get("attenuation", {}).get("mode") == "exact" for l in made["lights"]), 1)
+
+    def test_camera_near_edge_is_close_to_a_point_on_the_receiver(self):
+        moved, lit = 0, 0
+        for kind, seed, plain, made, done in Options().each("camera_near_edge"):
+            if not done:  # no ray past a caster meets the receiver: the camera stays
+                self.assertEqual(plain["camera"], made["camera"], f"{kind} {seed}")
+                continue
+            moved += 1
+            eye, target = made["camera"]["position"], made["camera"]["target"]
+            lit += (any(scene_mixed.in_cone(light, target) for light in scene_options.shadow_lights(made)) and
+                    scene_mixed.on_receiver(made, target))
+            gap = math.sqrt(g.dot(g.sub(eye, target), g.sub(eye, target)))
+            self.assertTrue(0.02 < gap < 1.13, f"{kind} {seed}: {gap:.3f} m")
+            on = g.surface_height(made["objects"][0], target[0], target[2])
+            self.assertLess(abs(target[1] - on), 0.02, f"{kind} {seed}: {target} over {on:.3f}")
+            self.assertLessEqual(made["camera"]["near"], 0.02)
+        # Most seeds find an edge point, and most of those on the receiver within a light's cone.
+        self.assertGreater(moved, 0.8 * 60, moved)
+        self.assertGreater(lit, 0.75 * moved, (lit, moved))
 
 
 class CommandLine(unittest.TestCase):
