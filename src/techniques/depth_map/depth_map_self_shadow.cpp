@@ -1,4 +1,4 @@
-// The depth map's false shadow on a caster's own grazed lit side (depth_map_self_shadow.h).
+// The depth map's false shadow on a caster's own lit side (depth_map_self_shadow.h).
 // Spaces: world (meshes, planes; rays in double); the map's texture coordinates (s, t, r, q);
 // camera clip; screen pixels.
 #include "techniques/depth_map/depth_map_self_shadow.h"
@@ -23,13 +23,15 @@ namespace {
 // changes across the reach, 1 / tan texel widths a texel, passes half what the bounded copy
 // pushes back, and the surface nearer the light within that reach is what the map holds.
 constexpr double kGrazingTangent = 2.0;
-// A pixel of a grazed triangle the estimate replays: the point under its centre (world), the
-// receiver and the triangle's index in it, and the screen pixels it stands for.
-struct GrazedSample {
+// A pixel of a lit triangle the estimate replays: the point under its centre (world), the
+// receiver and the triangle's index in it, the screen pixels it stands for, and whether the light
+// grazes the triangle (else only a shadow of its own object's texels counts there).
+struct LitSample {
   dvec3 point;
   const WorldMesh *mesh = nullptr;
   std::size_t triangle = 0;
   double pixels = 0.0;
+  bool grazed = false;
 };
 
 }  // namespace
@@ -75,7 +77,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
     const double length = glm::length(face);
     return length > 0.0 ? face / length : dvec3(0.0);
   };
-  std::vector<GrazedSample> samples;
+  std::vector<LitSample> samples;
   for (const WorldMesh &mesh : meshes) {
     if (!mesh.object->casts_shadow || !mesh.object->receives_shadow) continue;
     const std::vector<glm::uvec3> &triangles = mesh.object->mesh.triangles;
@@ -92,7 +94,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
                    length = glm::length(face) * glm::length(to_light);
       if (!(sine > 0.0) || !(length > 0.0)) continue;
       const double cosine = std::sqrt(std::max(length * length - sine * sine, 0.0));
-      if (!(sine < grazing_tangent * cosine)) continue;
+      const bool grazed = sine < grazing_tangent * cosine;
       if (!(glm::dot(face, camera - centre) > 0.0)) continue;  // culled by the camera passes
       // The pixels whose centres the triangle covers on screen (GL window coordinates: column
       // i's centre at i + 0.5, rows from the bottom), each at the triangle's point under it
@@ -136,7 +138,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
           const dvec3 point =
               (corner[0] * weight[0] + corner[1] * weight[1] + corner[2] * weight[2]) / sum;
           if (!inside_planes(beam.inner, glm::vec3(point))) continue;
-          samples.push_back({point, &mesh, t, 1.0});
+          samples.push_back({point, &mesh, t, 1.0, grazed});
         }
       }
     }
@@ -145,8 +147,8 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // Kept: what the camera sees and the light reaches; excused later, where a wrong one lies
   // within the band of a true shadow (checked only for wrong samples: 0 unknown, 1 excused,
   // 2 counted).
-  std::vector<GrazedSample> kept;
-  for (const GrazedSample &sample : samples) {
+  std::vector<LitSample> kept;
+  for (const LitSample &sample : samples) {
     if (seen_past_near_plane(bodies, camera_clip, camera, sample.point) &&
         !shadowed(sample.point, unit_face(*sample.mesh, sample.triangle))) {
       kept.push_back(sample);
@@ -158,7 +160,7 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
   // with a 4-neighbour across the edge, so where a shadow lies at a pixel offset (dx, dy) with
   // dx^2 + dy^2 <= 5. The surfaces the camera sees there: the nearest hits along rays through
   // points of the sample's triangle's plane at those screen offsets.
-  auto near_shadow = [&](const GrazedSample &sample) {
+  auto near_shadow = [&](const LitSample &sample) {
     const std::vector<glm::vec3> &position = sample.mesh->position;
     const glm::uvec3 &u = sample.mesh->object->mesh.triangles[sample.triangle];
     const dvec3 a(position[u.x]), b(position[u.y]), c(position[u.z]);
@@ -221,10 +223,10 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
       if (mesh.object->casts_shadow) replay.add(mesh, frustum);
     }
     double pixels = 0.0;
-    const GrazedSample *lowered_for = nullptr;  // a sample of the triangle `lowered` is of
+    const LitSample *lowered_for = nullptr;  // a sample of the triangle `lowered` is of
     double lowered = 0.0;
     for (std::size_t k = 0; k < kept.size(); ++k) {
-      const GrazedSample &sample = kept[k];
+      const LitSample &sample = kept[k];
       if (!lowered_for || sample.mesh != lowered_for->mesh ||
           sample.triangle != lowered_for->triangle) {
         // The receiver's lowered depth (r/q) on this triangle: its receiver-plane bias.
@@ -242,10 +244,13 @@ std::vector<EdgeErrorEstimate> self_shadow_errors(const Scene &scene,
       if (!replay.in_map(sample.point, texels, depth)) continue;
       const int surface = replay.shadowing(texels, depth - lowered);
       if (surface < 0) continue;
+      const std::size_t caster = drawn[static_cast<std::size_t>(surface)];
+      // On a triangle the light does not graze, the acne above cannot be: a texel of another
+      // caster shadowing it is that caster's shadow edge, which shadow_edge_error.h estimates.
+      if (!sample.grazed && &scene.objects[caster] != sample.mesh->object) continue;
       if (band[k] == 0) band[k] = near_shadow(sample) ? 1 : 2;
       if (band[k] != 2) continue;
-      result[drawn[static_cast<std::size_t>(surface)]].pixels[size] +=
-          static_cast<float>(sample.pixels);
+      result[caster].pixels[size] += static_cast<float>(sample.pixels);
       pixels += sample.pixels;
     }
     if (!(pixels > 0.0)) break;  // finer maps only lower the depth change a texel spans
