@@ -56,9 +56,13 @@ unsigned GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsign
   const ClipRect &clip = context_.raster.clip;
   const int w = static_cast<int>(clip.max_x - clip.min_x), h = static_cast<int>(clip.max_y - clip.min_y);
   if (!context_.fast_paths) return mask;
-  ClearSource &source = clear_source_;
+  // A side buffer of its own for the whole target's colour: sharing one, each clipped clear of
+  // another colour (step 1's corner in the fighter demo, every texture) refilled it whole at the
+  // target's size, and each whole clear refilled it back (+5 M instructions a shadowed demo frame).
+  const bool whole = w == target_.width && h == target_.height;
+  ClearSource &source = whole ? whole_clear_source_ : clear_source_;
   bool color = (mask & GL_COLOR_BUFFER_BIT) != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) != 0;
-  if (w == target_.width && h == target_.height) {  // the whole target: its colour only
+  if (whole) {  // the whole target: its colour only
     const bool repeated = source.whole_asked && source.whole_rgb565 == rgb565;
     source.whole_asked = color;
     source.whole_rgb565 = rgb565;
@@ -78,17 +82,19 @@ unsigned GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsign
     if (source.framebuffer == 0) {
       gl.glGenFramebuffers(1, &source.framebuffer);
       gl.glGenRenderbuffers(1, &source.color);
-      gl.glGenRenderbuffers(1, &source.depth);
+      if (!whole) gl.glGenRenderbuffers(1, &source.depth);
     }
     source.width = std::max(w, source.width), source.height = std::max(h, source.height);
     gl.glBindFramebuffer(GL_FRAMEBUFFER, source.framebuffer);
     gl.glBindRenderbuffer(GL_RENDERBUFFER, source.color);
     gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGB565, source.width, source.height);
     gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, source.color);
-    gl.glBindRenderbuffer(GL_RENDERBUFFER, source.depth);
-    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, source.width, source.height);
-    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                 source.depth);
+    if (!whole) {  // the whole target's side buffer holds colour only
+      gl.glBindRenderbuffer(GL_RENDERBUFFER, source.depth);
+      gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, source.width, source.height);
+      gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                   source.depth);
+    }
     source.filled = false;
   }
   if (!source.filled || (color && source.rgb565 != rgb565) || (depth && source.gl_depth != gl_depth)) {
@@ -108,7 +114,8 @@ unsigned GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsign
                     static_cast<float>(rgb565 & 0x1F) / 31.0f, 1.0f);
     gl.glClearDepth(gl_depth);
     gl.glClearStencil(0);
-    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.glClear(whole ? GL_COLOR_BUFFER_BIT
+                     : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     apply_fixed_function_state();  // back to the target, its scissor and masks
   }
   // The clip window in GL's rows from the bottom, as apply_fixed_function_state's scissor.

@@ -24,10 +24,11 @@ GlRenderer::~GlRenderer() {
   for (auto &entry : programs_) gl.glDeleteProgram(entry.second.program);
   if (bias_mark_program_ != 0) gl.glDeleteProgram(bias_mark_program_);
   if (query_ != 0) gl.glDeleteQueries(1, &query_);
-  if (clear_source_.framebuffer != 0) {
-    gl.glDeleteFramebuffers(1, &clear_source_.framebuffer);
-    gl.glDeleteRenderbuffers(1, &clear_source_.color);
-    gl.glDeleteRenderbuffers(1, &clear_source_.depth);
+  for (ClearSource *source : {&clear_source_, &whole_clear_source_}) {
+    if (source->framebuffer == 0) continue;
+    gl.glDeleteFramebuffers(1, &source->framebuffer);
+    gl.glDeleteRenderbuffers(1, &source->color);
+    if (source->depth != 0) gl.glDeleteRenderbuffers(1, &source->depth);
   }
   gl.glDeleteFramebuffers(1, &framebuffer_);
   gl.glDeleteRenderbuffers(2, color_buffers_);

@@ -193,7 +193,8 @@ class GlRenderer {
     bool whole_asked = false;
     std::uint16_t whole_rgb565 = 0;
   };
-  ClearSource clear_source_;
+  ClearSource clear_source_;        // for clipped clears: colour, depth and stencil
+  ClearSource whole_clear_source_;  // for the whole target's colour (no depth renderbuffer)
   decltype(&::glCopyImageSubData) copy_image_ = nullptr;  // loaded on the first clear by copy
   bool copy_image_checked_ = false;
   bool copy_beats_color_fill_ = false;  // the renderer is llvmpipe (clipped_clear.cpp)
