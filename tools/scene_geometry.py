@@ -1,9 +1,11 @@
 """Vector helpers and where the scene files' objects lie, for the scene generators.
 
-Shared by scene_near.py and scene_options.py: the transform of docs/scene_format.md (scale, then
-rotate about x, then y, then z, then translate), a few points on each built-in shape in world
-space (enough to find a caster's extent along a direction and its longest axis), and the height
-of a receiver's surface above a point of the xz plane. World space in metres, y up.
+Shared by scene_near.py, scene_options.py and scene_mixed.py: the transform of
+docs/scene_format.md (scale, then rotate about x, then y, then z, then translate), a few points
+on each built-in shape in world space (enough to find a caster's extent along a direction and
+its longest axis), the height of a receiver's surface above a point of the xz plane, and what a
+scene's options read of it (its ground, lights that cast shadows, casters' points) and the
+narrow cone they aim across a caster. World space in metres, y up.
 """
 import math
 
@@ -138,3 +140,40 @@ def surface_height(obj, x, z):
     # The plane through the top face: n . (p - (position + n top)) = 0, solved for y.
     origin = add(position, mul(n, top))
     return origin[1] - (n[0] * (x - origin[0]) + n[2] * (z - origin[2])) / n[1]
+
+
+def ground_height(scene):
+    return 1.0 if scene["objects"][0]["mesh"].get("shape") == "ring" else 0.0
+
+
+def shadow_lights(scene):
+    return [light for light in scene["lights"] if "slide" not in light]
+
+
+def caster_points(scene):
+    """Each caster's world points (a box's corners, a cylinder's rims, ...; an OBJ mesh's
+    position alone)."""
+    return [world_points(obj) for obj in scene["objects"][1:] if obj.get("casts_shadow", True)]
+
+
+def aim_across(r, light, points, ground):
+    """A narrow cone from `light` through a point of the caster's longest axis to the ground."""
+    a, b = farthest_pair(points)
+    through = add(a, mul(sub(b, a), r.uniform(0.2, 0.8)))
+    offset = sub(light["position"], through)
+    horizontal = math.hypot(offset[0], offset[2])
+    if math.degrees(math.atan2(offset[1], max(horizontal, 1e-6))) > 50:
+        # Oblique: the same distance and azimuth, 15 to 50 degrees above the point.
+        azimuth = math.atan2(offset[2], offset[0]) if horizontal > 1e-6 else r.uniform(0, 2 * math.pi)
+        distance = math.sqrt(dot(offset, offset))
+        light["position"] = r3(add(through, mul(direction(r.uniform(15, 50), azimuth), distance)))
+    position = light["position"]
+    target = through
+    if position[1] > through[1] + 1e-3:
+        # Where the ray from the light through the caster meets the ground's height, unless far.
+        t = (position[1] - ground) / (position[1] - through[1])
+        hit = add(position, mul(sub(through, position), t))
+        if math.hypot(hit[0], hit[2]) < 12:
+            target = hit
+    light["target"] = r3(target)
+    light["cone_degrees"] = round(r.uniform(2, 12), 1)

@@ -12,7 +12,6 @@ import math
 
 import scene_geometry as g
 import scene_lights
-import scene_options
 
 TYPES = ["slide", "exact", "in_plane", "narrow", "wide", "tiny_map", "faint"]
 
@@ -43,7 +42,7 @@ def in_plane_light(r, scene):
 
 
 def light_of(kind, r, scene, on_sphere):
-    ground = scene_options.ground_height(scene)
+    ground = g.ground_height(scene)
     lights = scene["lights"]
     exact_taken = any(l.get("attenuation", {}).get("mode") == "exact" for l in lights)
     if kind == "slide":
@@ -58,9 +57,9 @@ def light_of(kind, r, scene, on_sphere):
         light["attenuation"] = {"mode": "exact", "constant": 1, "linear": round(r.uniform(0, 0.3), 3),
                                 "quadratic": round(r.uniform(0, 0.05), 3)}
     elif kind == "narrow":
-        casters = scene_options.caster_points(scene)
+        casters = g.caster_points(scene)
         if casters:
-            scene_options.aim_across(r, light, r.choice(casters), ground)
+            g.aim_across(r, light, r.choice(casters), ground)
     elif kind == "wide":
         light["position"] = on_sphere(r, ground, (40, 90), (1, 3))
         light["cone_degrees"] = round(r.uniform(160, 179), 1)
@@ -143,8 +142,8 @@ def edge_point(scene, r, light, points, toward):
 
 
 def camera_near_edge(scene, r):
-    lights = scene_options.shadow_lights(scene)
-    casters = scene_options.caster_points(scene)
+    lights = g.shadow_lights(scene)
+    casters = g.caster_points(scene)
     if not lights or not casters:
         return None
     # Up to 60 tries for an edge point on the receiver that the light reaches (in its cone); else

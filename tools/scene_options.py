@@ -39,14 +39,6 @@ def generator(seed, name):
     return random.Random(f"random_scenes {name} {seed}")
 
 
-def ground_height(scene):
-    return 1.0 if scene["objects"][0]["mesh"].get("shape") == "ring" else 0.0
-
-
-def shadow_lights(scene):
-    return [light for light in scene["lights"] if "slide" not in light]
-
-
 def low_light(r, ground):
     """A spotlight 1 to 20 degrees above the receiver, 1.5 to 8 m from its middle (world)."""
     position = g.add([0, ground + 0.2, 0], g.mul(g.direction(r.uniform(1, 20), r.uniform(0, 2 * math.pi)),
@@ -56,9 +48,9 @@ def low_light(r, ground):
 
 
 def extra_lights(scene, r, on_sphere, low):
-    ground = ground_height(scene)
+    ground = g.ground_height(scene)
     lights = scene["lights"]
-    for light in shadow_lights(scene):
+    for light in g.shadow_lights(scene):
         if "beam" not in light and r.random() < 0.5:
             light["beam"] = r.choice(scene_lights.BEAMS)
             light["color"] = g.r3([r.uniform(0.5, 1) for _ in range(3)])
@@ -77,50 +69,21 @@ def extra_lights(scene, r, on_sphere, low):
     return "extra lights"
 
 
-def caster_points(scene):
-    """Each caster's world points (a box's corners, a cylinder's rims, ...; an OBJ mesh's
-    position alone)."""
-    return [g.world_points(obj) for obj in scene["objects"][1:] if obj.get("casts_shadow", True)]
-
-
-def aim_across(r, light, points, ground):
-    """A narrow cone from `light` through a point of the caster's longest axis to the ground."""
-    a, b = g.farthest_pair(points)
-    through = g.add(a, g.mul(g.sub(b, a), r.uniform(0.2, 0.8)))
-    offset = g.sub(light["position"], through)
-    horizontal = math.hypot(offset[0], offset[2])
-    if math.degrees(math.atan2(offset[1], max(horizontal, 1e-6))) > 50:
-        # Oblique: the same distance and azimuth, 15 to 50 degrees above the point.
-        azimuth = math.atan2(offset[2], offset[0]) if horizontal > 1e-6 else r.uniform(0, 2 * math.pi)
-        distance = math.sqrt(g.dot(offset, offset))
-        light["position"] = g.r3(g.add(through, g.mul(g.direction(r.uniform(15, 50), azimuth), distance)))
-    position = light["position"]
-    target = through
-    if position[1] > through[1] + 1e-3:
-        # Where the ray from the light through the caster meets the ground's height, unless far.
-        t = (position[1] - ground) / (position[1] - through[1])
-        hit = g.add(position, g.mul(g.sub(through, position), t))
-        if math.hypot(hit[0], hit[2]) < 12:
-            target = hit
-    light["target"] = g.r3(target)
-    light["cone_degrees"] = round(r.uniform(2, 12), 1)
-
-
 def length(points):
     a, b = g.farthest_pair(points)
     return math.sqrt(g.dot(g.sub(a, b), g.sub(a, b)))
 
 
 def narrow_cones(scene, r):
-    casters = caster_points(scene)
+    casters = g.caster_points(scene)
     if not casters:
         return None
-    ground = ground_height(scene)
+    ground = g.ground_height(scene)
     longest = max(casters, key=length)
-    for k, light in enumerate(shadow_lights(scene)):
+    for k, light in enumerate(g.shadow_lights(scene)):
         if k == 0 or r.random() < 0.5:
             points = longest if r.random() < 0.7 else r.choice(casters)
-            aim_across(r, light, points, ground)
+            g.aim_across(r, light, points, ground)
     return "narrow cones"
 
 

@@ -122,9 +122,9 @@ class Options(unittest.TestCase):
 
     def test_narrow_cone_crosses_a_caster(self):
         for kind, seed, plain, made, _ in self.each("narrow_cones"):
-            light = scene_options.shadow_lights(made)[0]
+            light = g.shadow_lights(made)[0]
             self.assertTrue(2 <= light["cone_degrees"] <= 12, f"{kind} {seed}")
-            axes = [g.farthest_pair(points) for points in scene_options.caster_points(made)]
+            axes = [g.farthest_pair(points) for points in g.caster_points(made)]
             # The axis passes through a point of some caster's longest axis (rounded to mm).
             miss = min(segment_to_line(a, b, light["position"], light["target"]) for a, b in axes)
             self.assertLess(miss, 0.02, f"{kind} {seed}: the cone's axis misses every caster by {miss:.3f} m")
@@ -206,7 +206,7 @@ class MixedOptions(unittest.TestCase):
                 continue
             moved += 1
             eye, target = made["camera"]["position"], made["camera"]["target"]
-            lit += (any(scene_mixed.in_cone(light, target) for light in scene_options.shadow_lights(made)) and
+            lit += (any(scene_mixed.in_cone(light, target) for light in g.shadow_lights(made)) and
                     scene_mixed.on_receiver(made, target))
             gap = math.sqrt(g.dot(g.sub(eye, target), g.sub(eye, target)))
             self.assertTrue(0.02 < gap < 1.13, f"{kind} {seed}: {gap:.3f} m")
