@@ -63,9 +63,8 @@ unsigned GlRenderer::clear_by_copy(std::uint16_t rgb565, double gl_depth, unsign
   ClearSource &source = whole ? whole_clear_source_ : clear_source_;
   bool color = (mask & GL_COLOR_BUFFER_BIT) != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) != 0;
   if (whole) {  // the whole target: its colour only
-    const bool repeated = source.whole_asked && source.whole_rgb565 == rgb565;
-    source.whole_asked = color;
-    source.whole_rgb565 = rgb565;
+    const bool repeated = last_whole_color_ == rgb565;
+    last_whole_color_ = color ? std::optional<std::uint16_t>(rgb565) : std::nullopt;
     const bool held = source.filled && source.rgb565 == rgb565 && source.width >= w && source.height >= h;
     if (!color || !(repeated || held) || !load_copy_image() || !copy_beats_color_fill_) return mask;
     depth = false;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -142,10 +143,10 @@ class GlRenderer {
   // one primitive at a time when `depth_writes`. Returns the pixels drawn when `query` is set.
   std::uint32_t draw_tested(unsigned mode, int first, int count, bool query, bool depth_writes);
   unsigned bias_mark_program();  // writes a constant depth and no colour; 0 on failure
-  // clear()'s work by copy (clipped_clear.cpp): on the fast paths, copies the region from
-  // clear_source_ where glCopyImageSubData costs less than GL's clear (a clip window smaller
-  // than the target; the whole target's colour on llvmpipe). Returns the bits of the GL clear
-  // `mask` it left for glClear.
+  // clear()'s work by copy (clipped_clear.cpp): on the fast paths, copies the region from a side
+  // buffer where glCopyImageSubData costs less than GL's clear (a clip window smaller than the
+  // target, from clear_source_; the whole target's colour on llvmpipe, from
+  // whole_clear_source_). Returns the bits of the GL clear `mask` it left for glClear.
   unsigned clear_by_copy(std::uint16_t rgb565, double gl_depth, unsigned mask);
   bool load_copy_image();  // copy_image_, loaded once; false if the GL has none
   void draw_counting_stages(const ShaderProgram *program, const PipelineKey &key, unsigned mode);
@@ -189,12 +190,11 @@ class GlRenderer {
     bool filled = false;
     std::uint16_t rgb565 = 0;
     double gl_depth = 0.0;
-    // The colour of the last clear of the whole target, if it cleared colour.
-    bool whole_asked = false;
-    std::uint16_t whole_rgb565 = 0;
   };
   ClearSource clear_source_;        // for clipped clears: colour, depth and stencil
   ClearSource whole_clear_source_;  // for the whole target's colour (no depth renderbuffer)
+  // The colour of the last clear of the whole target, if it cleared colour.
+  std::optional<std::uint16_t> last_whole_color_;
   decltype(&::glCopyImageSubData) copy_image_ = nullptr;  // loaded on the first clear by copy
   bool copy_image_checked_ = false;
   bool copy_beats_color_fill_ = false;  // the renderer is llvmpipe (clipped_clear.cpp)

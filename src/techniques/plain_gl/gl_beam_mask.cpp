@@ -67,7 +67,7 @@ bool lit_at(const SpotLight &light, const glm::vec2 &uv) {
 // is the nearest crossing of that edge on the segments to the neighbours within kDistanceReach
 // texels whose side differs, each found by bisection: for a straight edge at most 3% long (the
 // widest angle between two neighbours' directions is 26.6 degrees), so within 0.05 texel where
-// the slope is not clamped. Texels with no neighbour across the edge are 0 or 255.
+// the slope is not clamped. Texels with no neighbour across the edge are 0 or 65535.
 std::vector<std::uint16_t> footprint_texels(const SpotLight &light) {
   const int side = kFootprintSide;
   const float texel = 2.0f * kFootprintReach / static_cast<float>(side);  // beam plane units
